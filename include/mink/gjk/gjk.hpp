@@ -1,0 +1,195 @@
+/// @file gjk.hpp
+/// The GJK loop shared by intersect() and distance() (Gilbert, Johnson, Keerthi 1988; the
+/// termination and the lower bound follow van den Bergen, "A fast and robust GJK implementation
+/// for collision detection of convex objects", JGT 1999).
+///
+/// It runs on the *cores* of the shapes, in A's local frame with B's pose made relative to A, so
+/// that shapes far from the world origin lose no precision. Each iteration asks the Minkowski
+/// difference of the cores for its support point w in direction -v, where v is the point of the
+/// current simplex closest to the origin. Then:
+///   - |v| is an upper bound on the core distance, v.w / |v| a lower bound;
+///   - the loop stops when the bounds meet within the tolerance, when w brings nothing new
+///     (already in the simplex, or |v| stops decreasing: the rounding floor), when the simplex
+///     encloses the origin, or at the iteration cap;
+///   - in boolean mode it also stops as soon as a bound decides the question.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mink/gjk/signed_volumes.hpp"
+#include "mink/gjk/simplex.hpp"
+#include "mink/math/pose.hpp"
+#include "mink/query/status.hpp"
+#include "mink/query/tolerances.hpp"
+#include "mink/support/concept.hpp"
+
+namespace mink::detail {
+
+/// Support mapping of the Minkowski difference of the cores, A - B, in A's local frame.
+template <ConvexShape A, ConvexShape B>
+struct CoreDifference {
+  using S = typename A::Scalar;
+  const A& a;
+  const B& b;
+  Mat3T<S> rotation;     ///< B's rotation relative to A
+  Vec3T<S> translation;  ///< B's origin in A's frame
+
+  void support(const Vec3T<S>& d, SimplexVertexT<S>& out) const {
+    out.a = a.support_core(d);
+    out.b = rotation * b.support_core(rotation.transpose() * (-d)) + translation;
+    out.w = out.a - out.b;
+    out.dir = d;
+  }
+};
+
+enum class GjkMode {
+  Boolean,   ///< stop as soon as the answer to "do the shapes intersect?" is known
+  Distance,  ///< converge the distance; stop early only when the shapes are proven intersecting
+};
+
+template <class S>
+struct GjkOutcome {
+  Status status = Status::Separated;
+  SimplexT<S> simplex;  ///< final simplex with weights (empty in boolean mode exits)
+  Vec3T<S> v = Vec3T<S>::Zero();  ///< closest point of A - B's core to the origin (A's frame)
+  S upper = std::numeric_limits<S>::infinity();  ///< upper bound on the core distance
+  S lower = S(0);                                ///< lower bound on the core distance
+  int iterations = 0;
+};
+
+/// Runs GJK between the cores of a and b; `radius` is the sum of the shapes' radii and `size`
+/// the sum of their bounding radii. Status is Separated or Intersecting for the *full* shapes
+/// (cores within `radius`, touching within tolerance counts), or IterationLimit.
+template <GjkMode kMode, ConvexShape A, ConvexShape B>
+GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typename A::Scalar radius,
+                                       typename A::Scalar size,
+                                       const TolerancesT<typename A::Scalar>& tol,
+                                       GjkCacheT<typename A::Scalar>* cache) {
+  using S = typename A::Scalar;
+  GjkOutcome<S> out;
+  SimplexT<S>& simplex = out.simplex;
+  const S touch = tol.relative * size;  // core distances up to this count as touching
+  const S inside = radius + touch;
+
+  Vec3T<S> v;
+  bool v_in_set = false;  // v is a point of A - B (so |v| bounds the distance from above)
+  if (cache && cache->size > 0) {
+    // Rebuild the previous simplex from its directions: fresh support points of the current poses.
+    for (int i = 0; i < std::min(cache->size, 4); ++i) {
+      SimplexVertexT<S> vertex;
+      diff.support(cache->directions[i], vertex);
+      ++out.iterations;
+      bool duplicate = false;
+      for (int k = 0; k < simplex.size; ++k) duplicate |= simplex.vertices[k].w == vertex.w;
+      if (!duplicate) simplex.vertices[simplex.size++] = vertex;
+    }
+    v = reduce_to_closest(simplex);
+    v_in_set = true;
+    out.upper = v.norm();
+  } else {
+    // Start along the line of centres: A's farthest point towards B minus B's towards A.
+    v = -diff.translation;
+    if (!(v.squaredNorm() > S(0))) v = Vec3T<S>::UnitX();
+  }
+
+  while (true) {
+    const S v_sq = v.squaredNorm();
+    if (v_in_set && (simplex.size == 4 || v_sq <= touch * touch)) {
+      out.status = Status::Intersecting;
+      out.upper = std::sqrt(v_sq);
+      break;
+    }
+    if (v_in_set && kMode == GjkMode::Boolean && radius > S(0) && v_sq <= inside * inside) {
+      out.status = Status::Intersecting;
+      out.upper = std::sqrt(v_sq);
+      break;
+    }
+    if (v_in_set && out.iterations >= tol.max_iterations) {
+      out.status = Status::IterationLimit;
+      break;
+    }
+    SimplexVertexT<S> vertex;
+    diff.support(-v, vertex);
+    ++out.iterations;
+    const S v_norm = std::sqrt(v_sq);
+    const S vw = v.dot(vertex.w);
+    out.lower = std::max(out.lower, vw / v_norm);
+    // Boolean: a separating plane with room for the radii decides.
+    if (kMode == GjkMode::Boolean && out.lower > inside) {
+      out.status = Status::Separated;
+      break;
+    }
+    if (v_in_set) {
+      out.upper = v_norm;
+      // Bounds met: |v| - v.w/|v| <= tol * (size + |v|). Written without the division so that a
+      // NaN makes the comparison false and the loop falls through to the cap instead of exiting.
+      if (v_sq - vw <= tol.relative * (size + v_norm) * v_norm) {
+        out.status = Status::Separated;
+        break;
+      }
+      bool duplicate = false;
+      for (int k = 0; k < simplex.size; ++k) duplicate |= simplex.vertices[k].w == vertex.w;
+      if (duplicate) {
+        out.status = Status::Separated;
+        break;
+      }
+    }
+    const SimplexT<S> previous = simplex;
+    simplex.vertices[simplex.size++] = vertex;
+    const Vec3T<S> next = reduce_to_closest(simplex);
+    const S next_sq = next.squaredNorm();
+    if (!(next_sq == next_sq)) {  // NaN: only non-finite input can do this; keep the last state
+      simplex = previous;
+      out.status = Status::IterationLimit;
+      break;
+    }
+    if (v_in_set && next_sq >= v_sq) {
+      // No progress: the rounding floor. The previous simplex is the answer.
+      simplex = previous;
+      out.status = Status::Separated;
+      break;
+    }
+    v = next;
+    v_in_set = true;
+  }
+  out.v = v_in_set ? v : Vec3T<S>::Zero();
+  if (v_in_set) out.upper = v.norm();
+  if (out.status == Status::Separated && out.upper <= inside) out.status = Status::Intersecting;
+  if (out.status == Status::Intersecting && kMode == GjkMode::Distance) out.lower = S(0);
+  if (cache) {
+    cache->size = simplex.size;
+    for (int i = 0; i < simplex.size; ++i) cache->directions[i] = simplex.vertices[i].dir;
+    if (simplex.size == 0 && v.squaredNorm() > S(0)) {
+      cache->size = 1;
+      cache->directions[0] = -v;
+    }
+  }
+  return out;
+}
+
+}  // namespace mink::detail
+
+namespace mink::detail {
+
+/// Why a query cannot run, or nullptr. Poses are checked for finiteness only: an orthonormal
+/// rotation is the caller's contract (pose_error() checks it in full, the JSON front end does).
+template <ConvexShape A, ConvexShape B>
+const char* query_input_error(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+                              const PoseT<typename A::Scalar>& pose_b) {
+  if (const char* e = a.error()) return e;
+  if (const char* e = b.error()) return e;
+  if (!is_finite(pose_a.translation) || !pose_a.rotation.allFinite()) return "pose of A is not finite";
+  if (!is_finite(pose_b.translation) || !pose_b.rotation.allFinite()) return "pose of B is not finite";
+  return nullptr;
+}
+
+template <ConvexShape A, ConvexShape B>
+CoreDifference<A, B> make_core_difference(const A& a, const PoseT<typename A::Scalar>& pose_a,
+                                          const B& b, const PoseT<typename A::Scalar>& pose_b) {
+  const PoseT<typename A::Scalar> relative = pose_a.relative(pose_b);
+  return {a, b, relative.rotation, relative.translation};
+}
+
+}  // namespace mink::detail

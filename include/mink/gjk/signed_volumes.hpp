@@ -1,0 +1,201 @@
+/// @file signed_volumes.hpp
+/// The distance sub-algorithm of GJK: the point of a simplex closest to the origin.
+///
+/// We use the signed-volumes method of Montanari, Petrinic and Barbieri, "Improving the GJK
+/// algorithm for faster and more reliable distance queries between convex objects" (ACM TOG
+/// 2017), rather than Johnson's sub-algorithm. Johnson decides the Voronoi region from products of
+/// cofactors that lose all their digits on nearly flat or nearly degenerate simplices, and its
+/// "backup procedure" is then the only thing between GJK and a wrong or looping answer. Signed
+/// volumes decide with the signs of the barycentric volumes of the simplex itself (which are
+/// well conditioned), project the origin onto the affine hull directly (so the distance to a
+/// face keeps its relative accuracy even when the barycentrics do not), and recurse only into the
+/// faces that the origin lies outside of.
+///
+/// Departures from the paper: the recursion does not assume GJK's vertex ordering (any simplex,
+/// including ones rebuilt from a warm-start cache, is handled); near-flat triangles and
+/// tetrahedra (relative size below kFlatness) are treated as their boundary; barycentrics are
+/// normalised by the sum of the computed sub-volumes so they always lie in [0, 1] and sum to 1.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "mink/gjk/simplex.hpp"
+
+namespace mink::detail {
+
+/// Closest point of a sub-simplex with its support: `mask` bit i set means vertex i is used.
+template <class S>
+struct SubSimplex {
+  Vec3T<S> v;
+  S weights[4] = {};
+  unsigned mask = 0;
+  S dist_sq = std::numeric_limits<S>::infinity();
+};
+
+/// A triangle or tetrahedron whose squared sine (the relative size of its area or volume against
+/// its edges) is below this is treated as flat: its barycentrics would be noise. (1e4 eps)^2, so
+/// about 5e-24 in double.
+template <class S>
+constexpr S kFlatness = S(1e8) * std::numeric_limits<S>::epsilon() * std::numeric_limits<S>::epsilon();
+
+template <class S>
+SubSimplex<S> closest_on_vertex(const Vec3T<S>* w, int i) {
+  SubSimplex<S> r;
+  r.v = w[i];
+  r.weights[i] = S(1);
+  r.mask = 1u << i;
+  r.dist_sq = w[i].squaredNorm();
+  return r;
+}
+
+template <class S>
+SubSimplex<S> closest_on_segment(const Vec3T<S>* w, int i, int j) {
+  const Vec3T<S> t = w[j] - w[i];
+  const S tt = t.squaredNorm();
+  const S proj = -w[i].dot(t);  // (0 - w_i).t: where the origin projects, times tt
+  if (!(tt > S(0)) || proj <= S(0)) return closest_on_vertex(w, i);
+  if (proj >= tt) return closest_on_vertex(w, j);
+  const S s = proj / tt;
+  SubSimplex<S> r;
+  r.v = w[i] + s * t;
+  r.weights[i] = S(1) - s;
+  r.weights[j] = s;
+  r.mask = (1u << i) | (1u << j);
+  r.dist_sq = r.v.squaredNorm();
+  return r;
+}
+
+template <class S>
+void keep_closer(SubSimplex<S>& best, const SubSimplex<S>& candidate) {
+  if (candidate.dist_sq < best.dist_sq) best = candidate;
+}
+
+template <class S>
+bool same_sign_or_zero(S x, S reference) {
+  return reference > S(0) ? x >= S(0) : x <= S(0);
+}
+
+template <class S>
+SubSimplex<S> closest_on_triangle(const Vec3T<S>* w, int i, int j, int k) {
+  const Vec3T<S> e1 = w[j] - w[i];
+  const Vec3T<S> e2 = w[k] - w[i];
+  const Vec3T<S> n = e1.cross(e2);
+  const S nn = n.squaredNorm();
+  SubSimplex<S> best;
+  if (!(nn > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm())) {
+    keep_closer(best, closest_on_segment(w, i, j));
+    keep_closer(best, closest_on_segment(w, j, k));
+    keep_closer(best, closest_on_segment(w, k, i));
+    return best;
+  }
+  // Projection of the origin onto the plane: exact up to rounding of the plane's offset.
+  const Vec3T<S> p = n * (w[i].dot(n) / nn);
+  // Signed areas in the coordinate plane where the triangle's projection is largest; (x, y, z)
+  // taken cyclically so the areas carry the sign of n[axis].
+  int axis = 0;
+  if (std::abs(n.y()) > std::abs(n[axis])) axis = 1;
+  if (std::abs(n.z()) > std::abs(n[axis])) axis = 2;
+  const int x = (axis + 1) % 3, y = (axis + 2) % 3;
+  auto area = [x, y](const Vec3T<S>& a, const Vec3T<S>& b, const Vec3T<S>& c) {
+    return (b[x] - a[x]) * (c[y] - a[y]) - (b[y] - a[y]) * (c[x] - a[x]);
+  };
+  const S ci = area(p, w[j], w[k]);
+  const S cj = area(w[i], p, w[k]);
+  const S ck = area(w[i], w[j], p);
+  const S ref = n[axis];
+  const bool in_i = same_sign_or_zero(ci, ref);
+  const bool in_j = same_sign_or_zero(cj, ref);
+  const bool in_k = same_sign_or_zero(ck, ref);
+  if (in_i && in_j && in_k) {
+    const S sum = ci + cj + ck;
+    if (sum != S(0)) {
+      best.v = p;
+      best.weights[i] = ci / sum;
+      best.weights[j] = cj / sum;
+      best.weights[k] = ck / sum;
+      best.mask = (1u << i) | (1u << j) | (1u << k);
+      best.dist_sq = p.squaredNorm();
+      return best;
+    }
+  }
+  // Outside: the closest point lies on an edge whose line has the origin's projection beyond it.
+  if (!in_i) keep_closer(best, closest_on_segment(w, j, k));
+  if (!in_j) keep_closer(best, closest_on_segment(w, k, i));
+  if (!in_k) keep_closer(best, closest_on_segment(w, i, j));
+  if (best.mask == 0) {
+    keep_closer(best, closest_on_segment(w, i, j));
+    keep_closer(best, closest_on_segment(w, j, k));
+    keep_closer(best, closest_on_segment(w, k, i));
+  }
+  return best;
+}
+
+template <class S>
+SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
+  const Vec3T<S> e1 = w[1] - w[0], e2 = w[2] - w[0], e3 = w[3] - w[0];
+  const S det = e1.dot(e2.cross(e3));
+  // Barycentric volumes: c[i] is the volume with w[i] replaced by the origin.
+  const S c[4] = {w[1].dot(w[2].cross(w[3])), -w[0].dot(w[2].cross(w[3])),
+                  w[0].dot(w[1].cross(w[3])), -w[0].dot(w[1].cross(w[2]))};
+  static constexpr int kFace[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+  SubSimplex<S> best;
+  const bool flat =
+      !(det * det > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm() * e3.squaredNorm());
+  if (!flat) {
+    bool inside = true;
+    for (int i = 0; i < 4; ++i) inside = inside && same_sign_or_zero(c[i], det);
+    const S sum = c[0] + c[1] + c[2] + c[3];
+    if (inside && sum != S(0)) {
+      best.v = Vec3T<S>::Zero();
+      for (int i = 0; i < 4; ++i) best.weights[i] = c[i] / sum;
+      best.mask = 0xF;
+      best.dist_sq = S(0);
+      return best;
+    }
+    for (int i = 0; i < 4; ++i)
+      if (!same_sign_or_zero(c[i], det))
+        keep_closer(best, closest_on_triangle(w, kFace[i][0], kFace[i][1], kFace[i][2]));
+    if (best.mask != 0) return best;
+  }
+  for (int i = 0; i < 4; ++i)
+    keep_closer(best, closest_on_triangle(w, kFace[i][0], kFace[i][1], kFace[i][2]));
+  return best;
+}
+
+/// Replaces the simplex by the smallest sub-simplex whose hull holds the point closest to the
+/// origin, sets its weights and returns that point.
+template <class S>
+Vec3T<S> reduce_to_closest(SimplexT<S>& simplex) {
+  Vec3T<S> w[4];
+  for (int i = 0; i < simplex.size; ++i) w[i] = simplex.vertices[i].w;
+  SubSimplex<S> r;
+  switch (simplex.size) {
+    case 1: r = closest_on_vertex(w, 0); break;
+    case 2: r = closest_on_segment(w, 0, 1); break;
+    case 3: r = closest_on_triangle(w, 0, 1, 2); break;
+    default: r = closest_on_tetrahedron(w); break;
+  }
+  // Keep vertices with a positive weight, in order.
+  int kept = 0;
+  for (int i = 0; i < simplex.size; ++i) {
+    if ((r.mask >> i & 1u) && r.weights[i] > S(0)) {
+      simplex.vertices[kept] = simplex.vertices[i];
+      simplex.weights[kept] = r.weights[i];
+      ++kept;
+    }
+  }
+  if (kept == 0) {  // every weight rounded to zero: keep the closest vertex
+    int best = 0;
+    for (int i = 1; i < simplex.size; ++i)
+      if (w[i].squaredNorm() < w[best].squaredNorm()) best = i;
+    simplex.vertices[0] = simplex.vertices[best];
+    simplex.weights[0] = S(1);
+    kept = 1;
+    r.v = w[best];
+  }
+  simplex.size = kept;
+  return r.v;
+}
+
+}  // namespace mink::detail

@@ -1,0 +1,36 @@
+/// @file simplex.hpp
+/// GJK's simplex: up to four points of the Minkowski difference A - B, each with the support
+/// points on A and B that made it and the direction that found it.
+#pragma once
+
+#include "mink/math/vec.hpp"
+
+namespace mink {
+
+template <class S>
+struct SimplexVertexT {
+  Vec3T<S> w;    ///< a - b, a point of the Minkowski difference of the cores
+  Vec3T<S> a;    ///< support point on A's core (A's local frame)
+  Vec3T<S> b;    ///< support point on B's core (A's local frame)
+  Vec3T<S> dir;  ///< the search direction that produced it (A's local frame)
+};
+
+template <class S>
+struct SimplexT {
+  SimplexVertexT<S> vertices[4];
+  S weights[4] = {};  ///< barycentric weights of the closest point, > 0 and summing to 1
+  int size = 0;       ///< 0..4
+};
+
+/// Warm start for temporally coherent queries: the directions of the last final simplex in A's
+/// local frame. A zero-initialised cache is a valid cold start. The cache is only a hint: a stale
+/// cache costs iterations, never accuracy.
+template <class S>
+struct GjkCacheT {
+  Vec3T<S> directions[4];
+  int size = 0;
+};
+
+using GjkCache = GjkCacheT<double>;
+
+}  // namespace mink

@@ -1,0 +1,76 @@
+/// @file pose.hpp
+/// Rigid motion from a shape's local frame to the world frame: world = rotation * local + translation.
+#pragma once
+
+#include <cmath>
+
+#include "mink/math/vec.hpp"
+
+namespace mink {
+
+/// A rigid pose. The rotation is stored as a matrix because queries rotate many directions and
+/// points per call (9 multiply-adds each, against about 15 for a quaternion).
+template <class S>
+struct PoseT {
+  Mat3T<S> rotation = Mat3T<S>::Identity();     ///< orthonormal, determinant +1
+  Vec3T<S> translation = Vec3T<S>::Zero();      ///< (unit: length)
+
+  static PoseT identity() { return {}; }
+
+  /// Pose from a translation and a unit quaternion. The quaternion must be unit to within
+  /// kQuaternionNormTolerance; validate it with quaternion_error() first when it comes from a user.
+  static PoseT from(const Vec3T<S>& t, const QuatT<S>& q) {
+    PoseT p;
+    p.rotation = q.normalized().toRotationMatrix();
+    p.translation = t;
+    return p;
+  }
+  static PoseT from_translation(const Vec3T<S>& t) {
+    PoseT p;
+    p.translation = t;
+    return p;
+  }
+
+  Vec3T<S> apply(const Vec3T<S>& local) const { return rotation * local + translation; }
+  Vec3T<S> rotate(const Vec3T<S>& local) const { return rotation * local; }
+  Vec3T<S> inverse_rotate(const Vec3T<S>& world) const { return rotation.transpose() * world; }
+
+  /// The pose of `other` expressed in this pose's frame: this^-1 * other.
+  PoseT relative(const PoseT& other) const {
+    PoseT r;
+    r.rotation = rotation.transpose() * other.rotation;
+    r.translation = rotation.transpose() * (other.translation - translation);
+    return r;
+  }
+};
+
+using Pose = PoseT<double>;
+
+/// A quaternion whose norm is off by more than this is rejected rather than silently normalised
+/// (unit: dimensionless).
+inline constexpr double kQuaternionNormTolerance = 1e-6;
+
+/// Reason a pose is unusable, or nullptr when it is valid: finite translation and an orthonormal,
+/// right-handed rotation (to 1e-6).
+template <class S>
+const char* pose_error(const PoseT<S>& pose) {
+  if (!is_finite(pose.translation)) return "pose translation is not finite";
+  if (!pose.rotation.allFinite()) return "pose rotation is not finite";
+  const Mat3T<S> rtr = pose.rotation.transpose() * pose.rotation;
+  if ((rtr - Mat3T<S>::Identity()).norm() > S(1e-6)) return "pose rotation is not orthonormal";
+  if (pose.rotation.determinant() < S(0)) return "pose rotation is a reflection";
+  return nullptr;
+}
+
+/// Reason a quaternion is unusable as a rotation, or nullptr.
+template <class S>
+const char* quaternion_error(const QuatT<S>& q) {
+  if (!std::isfinite(q.w()) || !std::isfinite(q.x()) || !std::isfinite(q.y()) ||
+      !std::isfinite(q.z()))
+    return "quaternion is not finite";
+  if (std::abs(q.norm() - S(1)) > S(kQuaternionNormTolerance))
+    return "quaternion is not unit length (norm off by more than 1e-6)";
+  return nullptr;
+}
+
+}  // namespace mink

@@ -1,0 +1,27 @@
+/// @file mink.hpp
+/// Umbrella header: the whole public API of mink.
+#pragma once
+
+#include "mink/config.hpp"
+#include "mink/expected.hpp"
+#include "mink/gjk/distance.hpp"
+#include "mink/gjk/intersect.hpp"
+#include "mink/math/pose.hpp"
+#include "mink/math/vec.hpp"
+#include "mink/query/shape_queries.hpp"
+#include "mink/query/status.hpp"
+#include "mink/query/tolerances.hpp"
+#include "mink/shapes/box.hpp"
+#include "mink/shapes/capsule.hpp"
+#include "mink/shapes/cone.hpp"
+#include "mink/shapes/cylinder.hpp"
+#include "mink/shapes/ellipsoid.hpp"
+#include "mink/shapes/point.hpp"
+#include "mink/shapes/polytope.hpp"
+#include "mink/shapes/segment.hpp"
+#include "mink/shapes/sphere.hpp"
+#include "mink/shapes/triangle.hpp"
+#include "mink/support/concept.hpp"
+#include "mink/support/minkowski_sum.hpp"
+#include "mink/support/rounded.hpp"
+#include "mink/support/shape.hpp"

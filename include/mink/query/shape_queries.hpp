@@ -1,0 +1,19 @@
+/// @file shape_queries.hpp
+/// intersect() and distance() on run-time Shapes: one dispatch on the pair of core types, then the
+/// same template code as the static shapes (see gjk/intersect.hpp and gjk/distance.hpp for the
+/// conventions, which are identical).
+#pragma once
+
+#include "mink/gjk/distance.hpp"
+#include "mink/gjk/intersect.hpp"
+#include "mink/support/shape.hpp"
+
+namespace mink {
+
+IntersectResult intersect(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
+                          const Tolerances& tolerances = {}, GjkCache* cache = nullptr);
+
+DistanceResult distance(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
+                        const Tolerances& tolerances = {}, GjkCache* cache = nullptr);
+
+}  // namespace mink

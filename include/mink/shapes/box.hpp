@@ -1,0 +1,31 @@
+/// @file box.hpp
+#pragma once
+
+#include "mink/shapes/shape_common.hpp"
+
+namespace mink {
+
+/// Box centred at the local origin with its edges along the local axes.
+template <class S>
+struct BoxT {
+  using Scalar = S;
+
+  Vec3T<S> half_extents = Vec3T<S>::Zero();  ///< (unit: length), each finite and >= 0
+
+  Vec3T<S> support_core(const Vec3T<S>& d) const {
+    return {detail::sign_nonneg(d.x()) * half_extents.x(),
+            detail::sign_nonneg(d.y()) * half_extents.y(),
+            detail::sign_nonneg(d.z()) * half_extents.z()};
+  }
+  S core_radius() const { return S(0); }
+  S bounding_radius() const { return half_extents.norm(); }
+  const char* error() const {
+    for (int i = 0; i < 3; ++i)
+      if (!detail::is_length(half_extents[i])) return "box half_extents must be finite and >= 0";
+    return nullptr;
+  }
+};
+
+using Box = BoxT<double>;
+
+}  // namespace mink

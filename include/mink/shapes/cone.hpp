@@ -1,0 +1,41 @@
+/// @file cone.hpp
+#pragma once
+
+#include <cmath>
+
+#include "mink/shapes/shape_common.hpp"
+
+namespace mink {
+
+/// Solid cone with its axis along local z: base disc of `radius` at z = -half_height, apex at
+/// z = +half_height. Its local origin is the middle of the axis, not the centroid.
+template <class S>
+struct ConeT {
+  using Scalar = S;
+
+  S radius = S(0);       ///< base radius (unit: length), finite and >= 0
+  S half_height = S(0);  ///< (unit: length), finite and >= 0
+
+  Vec3T<S> support_core(const Vec3T<S>& d) const {
+    // The support is the apex or a point of the base rim, whichever reaches farther along d:
+    // apex: h*dz; rim: radius*|d_xy| - h*dz.
+    const S rho = std::hypot(d.x(), d.y());
+    const S apex = half_height * d.z();
+    const S rim = radius * rho - half_height * d.z();
+    if (apex >= rim) return {S(0), S(0), half_height};
+    if (rho == S(0)) return {S(0), S(0), -half_height};
+    const S k = radius / rho;
+    return {k * d.x(), k * d.y(), -half_height};
+  }
+  S core_radius() const { return S(0); }
+  S bounding_radius() const { return std::hypot(radius, half_height); }
+  const char* error() const {
+    if (!detail::is_length(radius)) return "cone radius must be finite and >= 0";
+    if (!detail::is_length(half_height)) return "cone half_height must be finite and >= 0";
+    return nullptr;
+  }
+};
+
+using Cone = ConeT<double>;
+
+}  // namespace mink

@@ -1,0 +1,37 @@
+/// @file cylinder.hpp
+#pragma once
+
+#include <cmath>
+
+#include "mink/shapes/shape_common.hpp"
+
+namespace mink {
+
+/// Solid cylinder with its axis along local z, from z = -half_height to +half_height.
+template <class S>
+struct CylinderT {
+  using Scalar = S;
+
+  S radius = S(0);       ///< (unit: length), finite and >= 0
+  S half_height = S(0);  ///< (unit: length), finite and >= 0
+
+  Vec3T<S> support_core(const Vec3T<S>& d) const {
+    const S z = detail::sign_nonneg(d.z()) * half_height;
+    const S rho = std::hypot(d.x(), d.y());
+    // Along the axis every rim point is a support point; the centre of the cap is the tie-break.
+    if (rho == S(0)) return {S(0), S(0), z};
+    const S k = radius / rho;
+    return {k * d.x(), k * d.y(), z};
+  }
+  S core_radius() const { return S(0); }
+  S bounding_radius() const { return std::hypot(radius, half_height); }
+  const char* error() const {
+    if (!detail::is_length(radius)) return "cylinder radius must be finite and >= 0";
+    if (!detail::is_length(half_height)) return "cylinder half_height must be finite and >= 0";
+    return nullptr;
+  }
+};
+
+using Cylinder = CylinderT<double>;
+
+}  // namespace mink

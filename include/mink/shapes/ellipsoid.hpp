@@ -1,0 +1,36 @@
+/// @file ellipsoid.hpp
+#pragma once
+
+#include <cmath>
+
+#include "mink/shapes/shape_common.hpp"
+
+namespace mink {
+
+/// Solid ellipsoid centred at the local origin with semi-axes `radii` along the local axes.
+template <class S>
+struct EllipsoidT {
+  using Scalar = S;
+
+  Vec3T<S> radii = Vec3T<S>::Zero();  ///< semi-axes (unit: length), each finite and >= 0
+
+  Vec3T<S> support_core(const Vec3T<S>& d) const {
+    // The ellipsoid is the image of the unit ball under D = diag(radii): support(d) = D^2 d / |D d|.
+    const Vec3T<S> dd = radii.cwiseProduct(d);
+    const S len = dd.norm();
+    // |D d| = 0 only when d is orthogonal to every non-zero axis: the centre is then a support point.
+    if (!(len > S(0))) return Vec3T<S>::Zero();
+    return radii.cwiseProduct(dd) / len;
+  }
+  S core_radius() const { return S(0); }
+  S bounding_radius() const { return radii.maxCoeff(); }
+  const char* error() const {
+    for (int i = 0; i < 3; ++i)
+      if (!detail::is_length(radii[i])) return "ellipsoid radii must be finite and >= 0";
+    return nullptr;
+  }
+};
+
+using Ellipsoid = EllipsoidT<double>;
+
+}  // namespace mink

@@ -1,0 +1,89 @@
+/// @file shape.hpp
+/// Shape: any shape of mink chosen at run time (for the command line, bindings and scenes).
+///
+/// A Shape is a Minkowski sum of primitive cores plus a radius, so every composition the JSON
+/// protocol allows (sums of sums, rounded sums, rounded spheres) flattens into one plain value:
+/// a sphere is a point core, a capsule a segment core, `rounded` adds to the radius and `sum`
+/// concatenates the cores and adds the radii. Queries on two Shapes dispatch once on the pair of
+/// core types and then run the same inlined template code as the static shapes.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "mink/expected.hpp"
+#include "mink/shapes/box.hpp"
+#include "mink/shapes/capsule.hpp"
+#include "mink/shapes/cone.hpp"
+#include "mink/shapes/cylinder.hpp"
+#include "mink/shapes/ellipsoid.hpp"
+#include "mink/shapes/point.hpp"
+#include "mink/shapes/polytope.hpp"
+#include "mink/shapes/segment.hpp"
+#include "mink/shapes/sphere.hpp"
+#include "mink/shapes/triangle.hpp"
+#include "mink/support/concept.hpp"
+
+namespace mink {
+
+/// Polytopes are shared, not copied, when a Shape is copied.
+using SharedPolytope = std::shared_ptr<const Polytope>;
+
+/// The primitive cores a Shape is made of. Every alternative has radius 0.
+using Core = std::variant<Point, Segment, Triangle, Box, Cylinder, Cone, Ellipsoid, SharedPolytope>;
+
+class Shape {
+ public:
+  using Scalar = double;
+
+  /// Each factory validates its input and says what is wrong.
+  static Expected<Shape> sphere(double radius);
+  static Expected<Shape> box(const Vec3& half_extents);
+  static Expected<Shape> capsule(double radius, double half_height);
+  static Expected<Shape> cylinder(double radius, double half_height);
+  static Expected<Shape> cone(double radius, double half_height);
+  static Expected<Shape> ellipsoid(const Vec3& radii);
+  static Expected<Shape> point(const Vec3& p);
+  static Expected<Shape> segment(const Vec3& a, const Vec3& b);
+  static Expected<Shape> triangle(const Vec3& a, const Vec3& b, const Vec3& c);
+  static Expected<Shape> polytope(std::span<const Vec3> points);
+  /// Minkowski sum ("sweep") of two shapes in the same frame.
+  static Expected<Shape> sum(const Shape& a, const Shape& b);
+  /// The shape grown by `margin` ("collision skin").
+  static Expected<Shape> rounded(const Shape& shape, double margin);
+
+  const std::vector<Core>& cores() const { return cores_; }
+
+  Vec3 support_core(const Vec3& d) const;
+  double core_radius() const { return radius_; }
+  double bounding_radius() const { return bounding_radius_; }
+  const char* error() const { return cores_.empty() ? "shape is empty" : nullptr; }
+
+ private:
+  static Expected<Shape> from_core(Core core, double radius);
+  std::vector<Core> cores_;
+  double radius_ = 0;
+  double bounding_radius_ = 0;
+};
+
+/// Support of one primitive core.
+inline Vec3 support_core(const Core& core, const Vec3& d) {
+  return std::visit(
+      [&d](const auto& c) -> Vec3 {
+        if constexpr (std::is_same_v<std::decay_t<decltype(c)>, SharedPolytope>)
+          return c->support_core(d);
+        else
+          return c.support_core(d);
+      },
+      core);
+}
+
+inline Vec3 Shape::support_core(const Vec3& d) const {
+  Vec3 s = mink::support_core(cores_[0], d);
+  for (std::size_t i = 1; i < cores_.size(); ++i) s += mink::support_core(cores_[i], d);
+  return s;
+}
+
+}  // namespace mink

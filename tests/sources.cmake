@@ -1,0 +1,3 @@
+set(MINK_TEST_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/smoke_test.cpp
+)
