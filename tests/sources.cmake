@@ -1,3 +1,4 @@
 set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/smoke_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/analytic_test.cpp
 )

@@ -1,0 +1,153 @@
+// GJK distance and intersect against closed-form answers (tests/oracle/analytic.hpp): sphere,
+// capsule, point and box pairs in random poses, including near-touching and overlapping ones.
+#include <gtest/gtest.h>
+
+#include "mink/mink.hpp"
+#include "oracle/analytic.hpp"
+#include "oracle/check.hpp"
+#include "oracle/random.hpp"
+
+namespace {
+
+using mink::Pose;
+using mink::Vec3;
+using oracle::Rng;
+using oracle::widen;
+
+/// A signed gap for a random case relative to `size`: mostly log-uniform separations over eight
+/// decades, with overlaps and near-touching cases of both signs mixed in.
+double random_gap(Rng& rng, double size) {
+  const double u = rng.uniform(0, 1);
+  if (u < 0.55) return size * rng.log_uniform(1e-13, 2);
+  if (u < 0.75) return -size * rng.log_uniform(1e-13, 0.5);
+  return size * rng.uniform(-1, 1);
+}
+
+TEST(GjkDistance, SphereSphereMatchesAnalytic) {
+  const std::uint64_t base = 1000;
+  const int n = oracle::sweep_count(3000);
+  oracle::Worst worst("sphere-sphere");
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const double ra = rng.log_uniform(0.01, 3), rb = rng.log_uniform(0.01, 3);
+    const double size = ra + rb;
+    const Pose pa = rng.pose(10);
+    const Vec3 dir = rng.unit();
+    const Pose pb =
+        Pose::from(pa.translation + dir * (size + random_gap(rng, size)), rng.rotation());
+    const mink::Sphere a{ra}, b{rb};
+    const auto got = mink::distance(a, pa, b, pb);
+    const auto got_bool = mink::intersect(a, pa, b, pb);
+    const auto expected =
+        oracle::sphere_sphere(widen(pa.translation), ra, widen(pb.translation), rb);
+    oracle::expect_matches(expected, got, got_bool, size, pa.translation.norm(), true, worst);
+  }
+}
+
+TEST(GjkDistance, SphereCapsuleMatchesAnalytic) {
+  const std::uint64_t base = 2000;
+  const int n = oracle::sweep_count(3000);
+  oracle::Worst worst("sphere-capsule");
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const double rs = rng.log_uniform(0.01, 2);
+    const mink::Capsule cap{rng.log_uniform(0.01, 2), rng.log_uniform(0.001, 3)};
+    const double size = rs + cap.radius + cap.half_height;
+    const Pose pa = rng.pose(5);
+    const Pose pb = Pose::from(pa.translation + rng.in_ball(1.5 * size), rng.rotation());
+    const auto wc = oracle::make_capsule(cap.radius, cap.half_height, widen(pb.rotation),
+                                         widen(pb.translation));
+    const auto expected = oracle::sphere_capsule(widen(pa.translation), rs, wc);
+    const mink::Sphere s{rs};
+    const auto got = mink::distance(s, pa, cap, pb);
+    const auto got_bool = mink::intersect(s, pa, cap, pb);
+    oracle::expect_matches(expected, got, got_bool, size, pa.translation.norm(), true, worst);
+  }
+}
+
+TEST(GjkDistance, CapsuleCapsuleMatchesAnalytic) {
+  const std::uint64_t base = 3000;
+  const int n = oracle::sweep_count(4000);
+  oracle::Worst worst("capsule-capsule");
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const mink::Capsule a{rng.log_uniform(0.01, 1), rng.log_uniform(0.001, 3)};
+    const mink::Capsule b{rng.log_uniform(0.01, 1), rng.log_uniform(0.001, 3)};
+    const double size = a.radius + a.half_height + b.radius + b.half_height;
+    const Pose pa = rng.pose(5);
+    // A quarter of the cases have parallel or nearly parallel axes (the classic trap).
+    mink::Quat qb = rng.rotation();
+    const int kind = rng.integer(0, 7);
+    const mink::Quat qa(pa.rotation);
+    if (kind == 0) qb = qa;
+    if (kind == 1) qb = qa * mink::Quat(Eigen::AngleAxisd(rng.log_uniform(1e-9, 1e-3), rng.unit()));
+    const Pose pb = Pose::from(pa.translation + rng.in_ball(1.2 * size), qb);
+    const auto wa =
+        oracle::make_capsule(a.radius, a.half_height, widen(pa.rotation), widen(pa.translation));
+    const auto wb =
+        oracle::make_capsule(b.radius, b.half_height, widen(pb.rotation), widen(pb.translation));
+    const auto expected = oracle::capsule_capsule(wa, wb);
+    // The closest points are unique when the axes are far from parallel.
+    const double sin_angle = pa.rotation.col(2).cross(pb.rotation.col(2)).norm();
+    const auto got = mink::distance(a, pa, b, pb);
+    const auto got_bool = mink::intersect(a, pa, b, pb);
+    oracle::expect_matches(expected, got, got_bool, size, pa.translation.norm(), sin_angle > 0.1,
+                           worst);
+  }
+}
+
+TEST(GjkDistance, PointBoxMatchesAnalytic) {
+  const std::uint64_t base = 4000;
+  const int n = oracle::sweep_count(3000);
+  oracle::Worst worst("point-box");
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const mink::Box box{
+        Vec3(rng.log_uniform(0.01, 2), rng.log_uniform(0.01, 2), rng.log_uniform(0.01, 2))};
+    const double size = box.half_extents.norm();
+    const Pose pb = rng.pose(5);
+    // The point either sits in a pose (point at its local origin) or is offset in its own frame.
+    const Vec3 x = pb.translation + rng.in_ball(2.0 * size);
+    const bool use_pose = rng.chance(0.5);
+    const mink::Point point{use_pose ? Vec3::Zero() : Vec3(x - pb.translation)};
+    const Pose pa =
+        use_pose ? Pose::from(x, rng.rotation()) : Pose::from_translation(pb.translation);
+    const oracle::WorldBox wb{widen(box.half_extents), widen(pb.rotation), widen(pb.translation)};
+    const auto expected = oracle::point_box_answer(widen(x), wb);
+    const auto got = mink::distance(point, pa, box, pb);
+    const auto got_bool = mink::intersect(point, pa, box, pb);
+    oracle::expect_matches(expected, got, got_bool, size, pb.translation.norm(), true, worst);
+  }
+}
+
+TEST(GjkDistance, SphereBoxMatchesAnalytic) {
+  const std::uint64_t base = 5000;
+  const int n = oracle::sweep_count(3000);
+  oracle::Worst worst("sphere-box");
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const mink::Box box{
+        Vec3(rng.log_uniform(0.01, 2), rng.log_uniform(0.01, 2), rng.log_uniform(0.01, 2))};
+    const mink::Sphere sphere{rng.log_uniform(0.01, 2)};
+    const double size = box.half_extents.norm() + sphere.radius;
+    const Pose pb = rng.pose(5);
+    const Pose pa = Pose::from(pb.translation + rng.in_ball(1.5 * size), rng.rotation());
+    const oracle::WorldBox wb{widen(box.half_extents), widen(pb.rotation), widen(pb.translation)};
+    const auto expected = oracle::sphere_box(widen(pa.translation), sphere.radius, wb);
+    const auto got = mink::distance(sphere, pa, box, pb);
+    const auto got_bool = mink::intersect(sphere, pa, box, pb);
+    oracle::expect_matches(expected, got, got_bool, size, pb.translation.norm(), true, worst);
+  }
+}
+
+}  // namespace
