@@ -1,0 +1,145 @@
+// libccd 2.1 (Debian, double build): ccdGJKIntersect and ccdMPRIntersect. libccd has no distance
+// query (its dist_tolerance field is unused upstream; FCL's copy adds one, benchmarked as
+// fcl_ccd). libccd has no shapes either: the support and centre callbacks below are ours, in the
+// world frame, each shape with its pose baked in when the object is built (outside the timing).
+#include <ccd/ccd.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "peer.hpp"
+
+namespace mink_bench {
+
+namespace {
+
+struct CcdObject {
+  ShapeKind kind = ShapeKind::Box;
+  double rotation[9] = {};  // row-major, local to world
+  double translation[3] = {};
+  double half_extents[3] = {};
+  double radius = 0;
+  double half_height = 0;
+  const double* xyz = nullptr;  // polytope points, interleaved
+  int count = 0;
+};
+
+// Support of the whole shape (radius included), world frame.
+void ccd_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
+  const auto& o = *static_cast<const CcdObject*>(obj);
+  const double* r = o.rotation;
+  const double* d = dir->v;
+  // Local direction: R^T d.
+  const double lx = r[0] * d[0] + r[3] * d[1] + r[6] * d[2];
+  const double ly = r[1] * d[0] + r[4] * d[1] + r[7] * d[2];
+  const double lz = r[2] * d[0] + r[5] * d[1] + r[8] * d[2];
+  double px = 0, py = 0, pz = 0;
+  switch (o.kind) {
+    case ShapeKind::Box:
+      px = lx >= 0 ? o.half_extents[0] : -o.half_extents[0];
+      py = ly >= 0 ? o.half_extents[1] : -o.half_extents[1];
+      pz = lz >= 0 ? o.half_extents[2] : -o.half_extents[2];
+      break;
+    case ShapeKind::Capsule:
+    case ShapeKind::Sphere: {
+      const double len = std::sqrt(lx * lx + ly * ly + lz * lz);
+      const double s = len > 0 ? o.radius / len : 0.0;
+      px = lx * s;
+      py = ly * s;
+      pz = lz * s;
+      if (o.kind == ShapeKind::Capsule) pz += lz >= 0 ? o.half_height : -o.half_height;
+      break;
+    }
+    case ShapeKind::Polytope: {
+      int best = 0;
+      double best_dot = -HUGE_VAL;
+      for (int i = 0; i < o.count; ++i) {
+        const double* p = o.xyz + 3 * i;
+        const double dot = p[0] * lx + p[1] * ly + p[2] * lz;
+        if (dot > best_dot) {
+          best_dot = dot;
+          best = i;
+        }
+      }
+      px = o.xyz[3 * best];
+      py = o.xyz[3 * best + 1];
+      pz = o.xyz[3 * best + 2];
+      break;
+    }
+  }
+  out->v[0] = r[0] * px + r[1] * py + r[2] * pz + o.translation[0];
+  out->v[1] = r[3] * px + r[4] * py + r[5] * pz + o.translation[1];
+  out->v[2] = r[6] * px + r[7] * py + r[8] * pz + o.translation[2];
+}
+
+void ccd_center(const void* obj, ccd_vec3_t* out) {
+  const auto& o = *static_cast<const CcdObject*>(obj);
+  for (int k = 0; k < 3; ++k) out->v[k] = o.translation[k];
+}
+
+class CcdQueries final : public PairQueries {
+ public:
+  CcdQueries(const Case& c, bool mpr) : mpr_(mpr) {
+    // Polytope points, interleaved, one block per shape of each pool.
+    auto flatten = [](const std::vector<ShapeDesc>& shapes, std::vector<std::vector<double>>& out) {
+      for (const auto& s : shapes) {
+        std::vector<double> xyz;
+        for (const auto& p : s.points) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+        out.push_back(std::move(xyz));
+      }
+    };
+    flatten(c.shapes_a, points_a_);
+    flatten(c.shapes_b, points_b_);
+    for (const auto& p : c.pairs) {
+      a_.push_back(make(c.shapes_a[p.a], points_a_[p.a], p.rotation_a, p.translation_a));
+      b_.push_back(make(c.shapes_b[p.b], points_b_[p.b], p.rotation_b, p.translation_b));
+    }
+    CCD_INIT(&ccd_);
+    ccd_.support1 = ccd_support;
+    ccd_.support2 = ccd_support;
+    ccd_.center1 = ccd_center;
+    ccd_.center2 = ccd_center;
+    // The default is unbounded (ULONG_MAX); a cap only guards against a hang and is never hit
+    // on these inputs.
+    ccd_.max_iterations = 1000;
+  }
+  bool intersect(std::size_t i) const override {
+    return (mpr_ ? ccdMPRIntersect(&a_[i], &b_[i], &ccd_)
+                 : ccdGJKIntersect(&a_[i], &b_[i], &ccd_)) != 0;
+  }
+  double distance(std::size_t) const override { throw std::logic_error("libccd has no distance"); }
+
+ private:
+  static CcdObject make(const ShapeDesc& s, const std::vector<double>& xyz,
+                        const Eigen::Matrix3d& r, const Eigen::Vector3d& t) {
+    CcdObject o;
+    o.kind = s.kind;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) o.rotation[3 * i + j] = r(i, j);
+    for (int k = 0; k < 3; ++k) {
+      o.translation[k] = t[k];
+      o.half_extents[k] = s.half_extents[k];
+    }
+    o.radius = s.radius;
+    o.half_height = s.half_height;
+    o.xyz = xyz.data();
+    o.count = static_cast<int>(s.points.size());
+    return o;
+  }
+
+  bool mpr_;
+  ccd_t ccd_;
+  std::vector<std::vector<double>> points_a_, points_b_;
+  std::vector<CcdObject> a_, b_;
+};
+
+}  // namespace
+
+std::vector<Method> make_ccd_methods(const Case& c) {
+  std::vector<Method> m;
+  m.push_back({"ccd_gjk", true, false, std::make_unique<CcdQueries>(c, false)});
+  m.push_back({"ccd_mpr", true, false, std::make_unique<CcdQueries>(c, true)});
+  return m;
+}
+
+}  // namespace mink_bench
