@@ -1,0 +1,153 @@
+#include "answer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+
+#include "json_writer.hpp"
+#include "mink/query/shape_queries.hpp"
+
+namespace mink::cli {
+
+namespace {
+
+/// Median time of one call of `run`, in microseconds. Calls are timed in batches long enough
+/// (>= 20 us) that the clock's resolution and overhead do not matter; the median of several
+/// batches ignores the odd interruption by the system.
+template <class Run>
+double median_microseconds(Run&& run) {
+  using Clock = std::chrono::steady_clock;
+  constexpr auto kMinBatch = std::chrono::microseconds(20);
+  constexpr long kMaxBatchSize = 1L << 20;
+  constexpr int kBatches = 7;
+  long batch_size = 1;
+  // The smallest power of two whose batch takes at least kMinBatch; this also warms the caches.
+  for (;;) {
+    const auto start = Clock::now();
+    for (long i = 0; i < batch_size; ++i) run();
+    if (Clock::now() - start >= kMinBatch || batch_size >= kMaxBatchSize) break;
+    batch_size *= 2;
+  }
+  std::array<double, kBatches> per_call;
+  for (double& t : per_call) {
+    const auto start = Clock::now();
+    for (long i = 0; i < batch_size; ++i) run();
+    const std::chrono::duration<double, std::micro> elapsed = Clock::now() - start;
+    t = elapsed.count() / static_cast<double>(batch_size);
+  }
+  std::nth_element(per_call.begin(), per_call.begin() + kBatches / 2, per_call.end());
+  return per_call[kBatches / 2];
+}
+
+/// Microseconds rounded to nanoseconds, so that the shortest form stays short.
+double round_to_nanoseconds(double us) {
+  return std::round(us * 1000.0) / 1000.0;
+}
+
+void begin_answer(std::string_view id_json, const char* status, std::string& out) {
+  out += "{\"id\":";
+  out += id_json;
+  out += ",\"status\":\"";
+  out += status;
+  out += '"';
+}
+
+void append_field(std::string& out, const char* key) {
+  out += ",\"";
+  out += key;
+  out += "\":";
+}
+
+void end_answer(const AnswerOptions& options, double us, std::string& out) {
+  if (options.timing) {
+    append_field(out, "us");
+    append_number(out, round_to_nanoseconds(us));
+  }
+  out += "}\n";
+}
+
+const char* status_name(Status status) {
+  return status == Status::IterationLimit ? "iteration_limit" : "ok";
+}
+
+constexpr std::string_view kNotFinite =
+    "the query produced a number that is not finite (a mink bug: please report this line)";
+
+void write_intersect(const Query& query, const AnswerOptions& options, std::string& out) {
+  const auto run = [&] { return intersect(query.a, query.pose_a, query.b, query.pose_b); };
+  const IntersectResult r = run();
+  if (r.status == Status::InvalidInput) return write_error(query.id, r.error, out);
+  double us = 0;
+  if (options.timing) {
+    volatile int sink = 0;
+    us = median_microseconds([&] { sink = sink + run().iterations; });
+  }
+  begin_answer(query.id, status_name(r.status), out);
+  append_field(out, "intersect");
+  out += r.intersect ? "true" : "false";
+  append_field(out, "iterations");
+  append_integer(out, r.iterations);
+  end_answer(options, us, out);
+}
+
+void write_distance(const Query& query, const AnswerOptions& options, std::string& out) {
+  const auto run = [&] { return distance(query.a, query.pose_a, query.b, query.pose_b); };
+  const DistanceResult r = run();
+  if (r.status == Status::InvalidInput) return write_error(query.id, r.error, out);
+  if (!std::isfinite(r.distance) || !std::isfinite(r.error_bound) || !is_finite(r.normal) ||
+      !is_finite(r.point_a) || !is_finite(r.point_b))
+    return write_error(query.id, kNotFinite, out);
+  double us = 0;
+  if (options.timing) {
+    volatile int sink = 0;
+    us = median_microseconds([&] { sink = sink + run().iterations; });
+  }
+  const bool contact = query.want == Want::Contact;
+  if (r.intersect && contact) {
+    // Depth, normal and deepest points of penetrating shapes are EPA's job (the next issue).
+    begin_answer(query.id, "unsupported", out);
+    out +=
+        ",\"intersect\":true,\"distance\":0,\"error\":\"penetration depth, normal and points of "
+        "intersecting shapes need EPA (not yet built)\"";
+    return end_answer(options, us, out);
+  }
+  begin_answer(query.id, status_name(r.status), out);
+  append_field(out, "intersect");
+  out += r.intersect ? "true" : "false";
+  append_field(out, "distance");
+  append_number(out, r.distance);
+  if (contact) out += ",\"depth\":0";
+  // The normal and points are defined only for separated shapes; GJK leaves them zero otherwise.
+  if (!r.intersect && r.normal.squaredNorm() > 0) {
+    append_field(out, "normal");
+    append_vec3(out, r.normal);
+    append_field(out, "point_a");
+    append_vec3(out, r.point_a);
+    append_field(out, "point_b");
+    append_vec3(out, r.point_b);
+  }
+  append_field(out, "iterations");
+  append_integer(out, r.iterations);
+  if (r.status == Status::IterationLimit) {
+    append_field(out, "error_bound");
+    append_number(out, r.error_bound);
+  }
+  end_answer(options, us, out);
+}
+
+}  // namespace
+
+void write_answer(const Query& query, const AnswerOptions& options, std::string& out) {
+  if (query.want == Want::Intersect) return write_intersect(query, options, out);
+  write_distance(query, options, out);
+}
+
+void write_error(std::string_view id_json, std::string_view message, std::string& out) {
+  begin_answer(id_json, "error", out);
+  append_field(out, "error");
+  append_string(out, message);
+  out += "}\n";
+}
+
+}  // namespace mink::cli

@@ -1,0 +1,35 @@
+/// @file answer.hpp
+/// Answering a parsed query and writing the answer line (protocol.md, "An answer line").
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "json_io.hpp"
+
+namespace mink::cli {
+
+struct AnswerOptions {
+  /// Add `us`: the median time of the query itself (parsing and printing excluded) over repeated
+  /// runs, in microseconds.
+  bool timing = false;
+};
+
+/// Runs `query` and appends its answer line, newline included, to `out`.
+///
+/// - `intersect`: id, status, intersect, iterations.
+/// - `distance`: id, status, intersect, distance, then normal, point_a and point_b when the shapes
+///   are separated, iterations.
+/// - `contact`: as `distance` plus `"depth": 0` when separated. Penetrating shapes need EPA for
+///   their depth, normal and points, which mink does not have yet: the answer is status
+///   `unsupported` with intersect, distance 0 and an error saying so.
+///
+/// Status: Separated and Intersecting are `ok`; IterationLimit is `iteration_limit` and adds
+/// `error_bound`; a result the library refused, or one holding a number that is not finite, is an
+/// error line (the second would be a library bug: the line is worth reporting).
+void write_answer(const Query& query, const AnswerOptions& options, std::string& out);
+
+/// Appends `{"id":<id_json>,"status":"error","error":"<message>"}` and a newline to `out`.
+void write_error(std::string_view id_json, std::string_view message, std::string& out);
+
+}  // namespace mink::cli

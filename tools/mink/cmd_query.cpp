@@ -1,0 +1,68 @@
+// `mink query`: the JSON-lines protocol of /work/shared/design/protocol.md on files or stdin.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "query_stream.hpp"
+
+namespace mink::cli {
+
+namespace {
+
+struct QueryCommandOptions {
+  bool timing = false;
+  std::vector<std::string> files;
+};
+
+/// Answers every file in order ("-" or no file: standard input). A file that cannot be read is
+/// reported on stderr and the others are still answered; the exit code is then 1. Malformed lines
+/// are answered with error lines and do not change the exit code.
+int run_query(const QueryCommandOptions& options) {
+  QueryStream stream(AnswerOptions{options.timing});
+  std::vector<std::string> files = options.files;
+  if (files.empty()) files.push_back("-");
+  int exit_code = 0;
+  for (const std::string& file : files) {
+    const bool is_stdin = file == "-";
+    const int fd = is_stdin ? STDIN_FILENO : ::open(file.c_str(), O_RDONLY);
+    if (fd < 0) {
+      std::fprintf(stderr, "mink query: cannot open %s: %s\n", file.c_str(), std::strerror(errno));
+      exit_code = 1;
+      continue;
+    }
+    std::string error;
+    if (!stream.run(fd, stdout, error)) {
+      std::fprintf(stderr, "mink query: %s: %s\n", is_stdin ? "stdin" : file.c_str(),
+                   error.c_str());
+      exit_code = 1;
+    }
+    if (!is_stdin) ::close(fd);
+  }
+  return exit_code;
+}
+
+}  // namespace
+
+void add_query_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<QueryCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "query",
+      "Answer collision queries given as JSON lines, one answer line per query line, in order.\n"
+      "Each line: {\"id\": .., \"a\": SHAPE, \"pa\": POSE, \"b\": SHAPE, \"pb\": POSE, \"want\": "
+      "\"intersect|distance|contact\"}");
+  command->add_flag("--timing", options->timing,
+                    "Add \"us\" to each answer: the median time of the query itself in "
+                    "microseconds (parsing and printing excluded)");
+  command->add_option("files", options->files,
+                      "Files of query lines, answered in order; none or \"-\": standard input");
+  command->callback([options, &exit_code] { exit_code = run_query(*options); });
+}
+
+}  // namespace mink::cli

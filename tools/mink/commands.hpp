@@ -1,0 +1,13 @@
+/// @file commands.hpp
+/// The subcommands of `mink`, one file each (cmd_*.cpp). Each registers itself on the app; its
+/// callback runs after the command line was parsed and stores the process exit code.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace mink::cli {
+
+/// `mink query [--timing] [files...]`: answer JSON-lines queries (cmd_query.cpp).
+void add_query_command(CLI::App& app, int& exit_code);
+
+}  // namespace mink::cli
