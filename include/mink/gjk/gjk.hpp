@@ -69,7 +69,10 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
                                        GjkCacheT<typename A::Scalar>* cache) {
   using S = typename A::Scalar;
   GjkOutcome<S> out;
-  SimplexT<S>& simplex = out.simplex;
+  // Two buffers: the sub-algorithm writes the reduced simplex into the other one, so that going
+  // back to the previous simplex (no progress) costs nothing.
+  SimplexT<S> buffers[2];
+  int current = 0;
   const S touch = tol.relative * size;  // core distances up to this count as touching
   const S inside = radius + touch;
 
@@ -82,10 +85,11 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
       diff.support(cache->directions[i], vertex);
       ++out.iterations;
       bool duplicate = false;
+      SimplexT<S>& simplex = buffers[current];
       for (int k = 0; k < simplex.size; ++k) duplicate |= simplex.vertices[k].w == vertex.w;
       if (!duplicate) simplex.vertices[simplex.size++] = vertex;
     }
-    v = reduce_to_closest(simplex);
+    v = reduce_to_closest(buffers[current], buffers[current]);
     v_in_set = true;
     out.upper = v.norm();
   } else {
@@ -95,6 +99,7 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
   }
 
   while (true) {
+    SimplexT<S>& simplex = buffers[current];
     const S v_sq = v.squaredNorm();
     if (v_in_set && (simplex.size == 4 || v_sq <= touch * touch)) {
       out.status = Status::Intersecting;
@@ -136,24 +141,28 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
         break;
       }
     }
-    const SimplexT<S> previous = simplex;
-    simplex.vertices[simplex.size++] = vertex;
-    const Vec3T<S> next = reduce_to_closest(simplex);
+    // Append w past the end, reduce into the other buffer; `simplex` itself stays as it was.
+    simplex.vertices[simplex.size] = vertex;
+    ++simplex.size;
+    SimplexT<S>& reduced = buffers[current ^ 1];
+    const Vec3T<S> next = reduce_to_closest(simplex, reduced);
+    --simplex.size;
     const S next_sq = next.squaredNorm();
     if (!(next_sq == next_sq)) {  // NaN: only non-finite input can do this; keep the last state
-      simplex = previous;
       out.status = Status::IterationLimit;
       break;
     }
     if (v_in_set && next_sq >= v_sq) {
       // No progress: the rounding floor. The previous simplex is the answer.
-      simplex = previous;
       out.status = Status::Separated;
       break;
     }
+    current ^= 1;
     v = next;
     v_in_set = true;
   }
+  out.simplex = buffers[current];
+  const SimplexT<S>& simplex = out.simplex;
   out.v = v_in_set ? v : Vec3T<S>::Zero();
   if (v_in_set) out.upper = v.norm();
   if (out.status == Status::Separated && out.upper <= inside) out.status = Status::Intersecting;

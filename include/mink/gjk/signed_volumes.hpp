@@ -163,38 +163,38 @@ SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
   return best;
 }
 
-/// Replaces the simplex by the smallest sub-simplex whose hull holds the point closest to the
-/// origin, sets its weights and returns that point.
+/// Writes to `out` the smallest sub-simplex of `in` whose hull holds the point of `in` closest to
+/// the origin, with its weights, and returns that point. `in` and `out` may be the same simplex.
 template <class S>
-Vec3T<S> reduce_to_closest(SimplexT<S>& simplex) {
+Vec3T<S> reduce_to_closest(const SimplexT<S>& in, SimplexT<S>& out) {
   Vec3T<S> w[4];
-  for (int i = 0; i < simplex.size; ++i) w[i] = simplex.vertices[i].w;
+  for (int i = 0; i < in.size; ++i) w[i] = in.vertices[i].w;
   SubSimplex<S> r;
-  switch (simplex.size) {
+  switch (in.size) {
     case 1: r = closest_on_vertex(w, 0); break;
     case 2: r = closest_on_segment(w, 0, 1); break;
     case 3: r = closest_on_triangle(w, 0, 1, 2); break;
     default: r = closest_on_tetrahedron(w); break;
   }
-  // Keep vertices with a positive weight, in order.
+  // Keep the vertices with a positive weight, in order (kept <= i, so in-place is safe).
   int kept = 0;
-  for (int i = 0; i < simplex.size; ++i) {
+  for (int i = 0; i < in.size; ++i) {
     if ((r.mask >> i & 1u) && r.weights[i] > S(0)) {
-      simplex.vertices[kept] = simplex.vertices[i];
-      simplex.weights[kept] = r.weights[i];
+      if (&out != &in || kept != i) out.vertices[kept] = in.vertices[i];
+      out.weights[kept] = r.weights[i];
       ++kept;
     }
   }
   if (kept == 0) {  // every weight rounded to zero: keep the closest vertex
     int best = 0;
-    for (int i = 1; i < simplex.size; ++i)
+    for (int i = 1; i < in.size; ++i)
       if (w[i].squaredNorm() < w[best].squaredNorm()) best = i;
-    simplex.vertices[0] = simplex.vertices[best];
-    simplex.weights[0] = S(1);
+    out.vertices[0] = in.vertices[best];
+    out.weights[0] = S(1);
     kept = 1;
     r.v = w[best];
   }
-  simplex.size = kept;
+  out.size = kept;
   return r.v;
 }
 

@@ -9,6 +9,7 @@
 
 #include "mink/expected.hpp"
 #include "mink/shapes/shape_common.hpp"
+#include "mink/shapes/support_scan.hpp"
 
 namespace mink {
 
@@ -48,42 +49,9 @@ class PolytopeT {
   S bounding_radius() const { return bounding_radius_; }
   const char* error() const { return x_.empty() ? "polytope has no points" : nullptr; }
 
-  /// Index of a point farthest along d; the lowest such index on ties.
+  /// Index of a point farthest along d; the lowest such index on ties (see support_scan.hpp).
   std::size_t support_index(const Vec3T<S>& d) const {
-    // Blocks of kBlock: the dot products and the block maximum vectorise; the index is searched
-    // only inside a block that beats the best so far, which is rare after the first few blocks.
-    constexpr std::size_t kBlock = 8;
-    const std::size_t n = x_.size();
-    const S dx = d.x(), dy = d.y(), dz = d.z();
-    const S* xs = x_.data();
-    const S* ys = y_.data();
-    const S* zs = z_.data();
-    S best = -std::numeric_limits<S>::infinity();
-    std::size_t best_i = 0;
-    std::size_t i = 0;
-    for (; i + kBlock <= n; i += kBlock) {
-      S dots[kBlock];
-      for (std::size_t k = 0; k < kBlock; ++k)
-        dots[k] = xs[i + k] * dx + ys[i + k] * dy + zs[i + k] * dz;
-      S block_max = dots[0];
-      for (std::size_t k = 1; k < kBlock; ++k) block_max = dots[k] > block_max ? dots[k] : block_max;
-      if (block_max > best) {
-        for (std::size_t k = 0; k < kBlock; ++k)
-          if (dots[k] == block_max) {
-            best = block_max;
-            best_i = i + k;
-            break;
-          }
-      }
-    }
-    for (; i < n; ++i) {
-      const S dot = xs[i] * dx + ys[i] * dy + zs[i] * dz;
-      if (dot > best) {
-        best = dot;
-        best_i = i;
-      }
-    }
-    return best_i;
+    return detail::support_index(x_.data(), y_.data(), z_.data(), x_.size(), d.x(), d.y(), d.z());
   }
 
  private:
