@@ -60,6 +60,10 @@ DistanceResultT<typename A::Scalar> distance(const A& a, const PoseT<typename A:
       detail::run_gjk<detail::GjkMode::Distance>(diff, radius_a + radius_b, size, tolerances, cache);
   result.status = gjk.status;
   result.iterations = gjk.iterations;
+  if (gjk.status == Status::InvalidInput) {
+    result.error = detail::kOverflowError;
+    return result;
+  }
   if (gjk.status == Status::Intersecting) {
     result.intersect = true;
     return result;

@@ -27,6 +27,9 @@
 
 namespace mink::detail {
 
+inline constexpr const char* kOverflowError =
+    "coordinates too large: the computation overflowed the floating-point range";
+
 /// Support mapping of the Minkowski difference of the cores, A - B, in A's local frame.
 template <ConvexShape A, ConvexShape B>
 struct CoreDifference {
@@ -61,7 +64,8 @@ struct GjkOutcome {
 
 /// Runs GJK between the cores of a and b; `radius` is the sum of the shapes' radii and `size`
 /// the sum of their bounding radii. Status is Separated or Intersecting for the *full* shapes
-/// (cores within `radius`, touching within tolerance counts), or IterationLimit.
+/// (cores within `radius`, touching within tolerance counts), IterationLimit, or InvalidInput
+/// when the arithmetic overflowed (kOverflowError).
 template <GjkMode kMode, ConvexShape A, ConvexShape B>
 GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typename A::Scalar radius,
                                        typename A::Scalar size,
@@ -148,8 +152,10 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
     const Vec3T<S> next = reduce_to_closest(simplex, reduced);
     --simplex.size;
     const S next_sq = next.squaredNorm();
-    if (!(next_sq == next_sq)) {  // NaN: only non-finite input can do this; keep the last state
-      out.status = Status::IterationLimit;
+    if (!(next_sq <= std::numeric_limits<S>::max())) {
+      // NaN or infinity: finite input whose products overflow (coordinates near 1e154 in
+      // double). Nothing trustworthy can be said.
+      out.status = Status::InvalidInput;
       break;
     }
     if (v_in_set && next_sq >= v_sq) {
@@ -165,6 +171,7 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
   const SimplexT<S>& simplex = out.simplex;
   out.v = v_in_set ? v : Vec3T<S>::Zero();
   if (v_in_set) out.upper = v.norm();
+  if (!(out.upper <= std::numeric_limits<S>::max()) && v_in_set) out.status = Status::InvalidInput;
   if (out.status == Status::Separated && out.upper <= inside) out.status = Status::Intersecting;
   if (out.status == Status::Intersecting && kMode == GjkMode::Distance) out.lower = S(0);
   if (cache) {

@@ -45,6 +45,10 @@ IntersectResultT<typename A::Scalar> intersect(
   const auto gjk = detail::run_gjk<detail::GjkMode::Boolean>(diff, radius, size, tolerances, cache);
   result.status = gjk.status;
   result.iterations = gjk.iterations;
+  if (gjk.status == Status::InvalidInput) {
+    result.error = detail::kOverflowError;
+    return result;
+  }
   result.intersect = gjk.status == Status::Intersecting ||
                      (gjk.status == Status::IterationLimit &&
                       gjk.upper <= radius + tolerances.relative * size);
