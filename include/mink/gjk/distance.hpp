@@ -9,7 +9,7 @@
 /// Normal: unit, from A's closest point towards B's: point_b - point_a = distance * normal.
 ///
 /// Accuracy: GJK stops when its upper and lower bounds on the core distance differ by at most
-/// `tolerances.relative * (size + distance)` (size: the sum of the shapes' bounding radii), or at
+/// `tolerances.relative * size` (size: the sum of the shapes' bounding radii), or at
 /// the rounding floor. Polytopes, boxes, points, segments and triangles converge exactly in a few
 /// iterations; spheres and capsules are points and segments with a radius, so they are exact too.
 /// Touching shapes (distance <= `tolerances.relative * size`) count as intersecting.

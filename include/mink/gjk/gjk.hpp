@@ -132,9 +132,11 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
     }
     if (v_in_set) {
       out.upper = v_norm;
-      // Bounds met: |v| - v.w/|v| <= tol * (size + |v|). Written without the division so that a
-      // NaN makes the comparison false and the loop falls through to the cap instead of exiting.
-      if (v_sq - vw <= tol.relative * (size + v_norm) * v_norm) {
+      // Bounds met: |v| - v.w/|v| <= tol * size. Relative to the shapes' size, not to the
+      // distance: far apart shapes still get their distance to within tol * size (or to the
+      // rounding floor, which the no-progress test below catches). Written without the division
+      // so that a NaN makes the comparison false instead of exiting.
+      if (v_sq - vw <= tol.relative * size * v_norm) {
         out.status = Status::Separated;
         break;
       }

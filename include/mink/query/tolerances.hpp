@@ -12,7 +12,8 @@ namespace mink {
 template <class S>
 struct TolerancesT {
   /// GJK stops when the gap between its upper and lower bounds on the core distance is at most
-  /// `relative * (size + distance)`, where size is the sum of the shapes' bounding radii.
+  /// `relative * size`, where size is the sum of the shapes' bounding radii, or when an iteration
+  /// makes no progress (the rounding floor, reached first when the shapes are far apart).
   /// (unit: dimensionless). Two shapes are touching, hence intersecting, when their distance is at
   /// most `relative * size`.
   S relative = std::max(S(1e-12), S(64) * std::numeric_limits<S>::epsilon());
