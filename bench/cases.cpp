@@ -112,6 +112,13 @@ ShapeDesc make_polytope(Rng& rng, int n) {
   s.kind = ShapeKind::Polytope;
   const Eigen::Vector3d axes(rng.uniform(0.5, 1.0), rng.uniform(0.5, 1.0), rng.uniform(0.5, 1.0));
   for (int i = 0; i < n; ++i) s.points.push_back(axes.cwiseProduct(rng.unit_vector()));
+  // Centre on the mean of the points, which lies inside the hull: the local origin must be an
+  // interior point (the overlapping pairs are built around it). Shifting keeps every point a
+  // vertex of the hull.
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& p : s.points) mean += p;
+  mean /= n;
+  for (auto& p : s.points) p -= mean;
   s.triangles = compute_hull(s.points);
   s.edges = collect_edges(s.triangles);
   return s;
