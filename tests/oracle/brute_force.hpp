@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <vector>
 
 #include "oracle/analytic.hpp"
@@ -53,10 +54,6 @@ struct HullAnswer {
 inline HullAnswer hull_distance(const std::vector<V3>& points) {
   HullAnswer ans;
   const std::size_t n = points.size();
-  Real scale = 0;
-  for (const V3& p : points) scale = std::max(scale, (p - points[0]).norm());
-  // Vertices and every edge: segments between points of the set lie in the hull, so each is an
-  // upper bound, and together with the facets they cover the hull's boundary.
   Real best = std::numeric_limits<Real>::infinity();
   auto consider = [&](const V3& c) {
     const Real d = c.norm();
@@ -65,41 +62,80 @@ inline HullAnswer hull_distance(const std::vector<V3>& points) {
       ans.closest = c;
     }
   };
+  // Vertices and every edge: segments between points of the set lie in the hull, so each is an
+  // upper bound that is attained, and with the facets they cover the hull's boundary.
   for (std::size_t i = 0; i < n; ++i) {
     consider(points[i]);
     for (std::size_t j = i + 1; j < n; ++j)
       consider(closest_on_segment(points[i], points[j], V3::Zero()).point);
   }
+  // Affine dimension, decided once for the whole set with a relative tolerance: the farthest
+  // point from points[0], the farthest from that line, the farthest from that plane.
+  Real scale = 0;
+  std::size_t i1 = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if ((points[i] - points[0]).norm() > scale) scale = (points[i] - points[0]).norm(), i1 = i;
+  const Real flat_tol = Real(1e-12) * scale;
+  Real line_dist = 0;
+  std::size_t i2 = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const V3 axis = points[i1] - points[0], rel = points[i] - points[0];
+    const Real d = scale > 0 ? (rel - axis * (rel.dot(axis) / axis.squaredNorm())).norm() : Real(0);
+    if (d > line_dist) line_dist = d, i2 = i;
+  }
+  if (!(line_dist > flat_tol)) {  // a point or collinear: the edges decided
+    ans.distance = best;
+    return ans;
+  }
+  const V3 plane = (points[i1] - points[0]).cross(points[i2] - points[0]).normalized();
+  Real thickness = 0;
+  for (const V3& p : points) thickness = std::max(thickness, std::abs(plane.dot(p - points[0])));
+  const bool flat = !(thickness > flat_tol);
+  ans.full_dimensional = !flat;
+  // Scan order for the side test: a stride through the set, so that points built next to each
+  // other (as in a Minkowski difference) are not tested one after the other.
+  std::vector<std::size_t> order(n);
+  std::size_t stride = 7;  // coprime with n, so that the order is a permutation
+  while (std::gcd(stride, n) != 1) stride += 2;
+  for (std::size_t m = 0; m < n; ++m) order[m] = (m * stride) % n;
   bool origin_outside_a_facet = false;
   Real min_facet_distance = std::numeric_limits<Real>::infinity();
+  // The side test runs in double (4x faster than long double here); its tolerance, 1e-12 of the
+  // scale, is far above double rounding, and a plane it admits is a supporting plane up to that.
+  std::vector<Eigen::Vector3d> pd(n);
+  for (std::size_t m = 0; m < n; ++m) pd[m] = points[m].cast<double>();
+  const double side_tol = 1e-12 * static_cast<double>(scale);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j)
       for (std::size_t k = j + 1; k < n; ++k) {
-        const V3 nrm = (points[j] - points[i]).cross(points[k] - points[i]);
-        const Real len = nrm.norm();
-        if (!(len > Real(1e-13) * scale * scale)) continue;  // collinear: covered by the edges
-        // A triple is a facet when no point lies strictly on both sides of its plane. Extra
-        // triples admitted by the tolerance are still triangles of the hull, so they can only
-        // give upper bounds that are also attained; a missed facet is what would be wrong.
-        const Real tol = Real(1e-12) * len * scale;
-        bool pos = false, neg = false, off_plane = false;
+        const Eigen::Vector3d nd = (pd[j] - pd[i]).cross(pd[k] - pd[i]);
+        const double lend = nd.norm();
+        if (!(lend > 1e-13 * static_cast<double>(scale * scale))) continue;  // collinear: edges
+        if (flat) {  // every triangle of a flat set lies in its hull; the minimum is attained
+          ++ans.facets;
+          consider(closest_on_triangle(V3::Zero(), points[i], points[j], points[k]));
+          continue;
+        }
+        // A facet plane has no point strictly on both sides. Planes admitted by the tolerance
+        // are still supporting planes up to it, so the inside test stays right; a missed facet is
+        // what would be wrong.
+        const Eigen::Vector3d ud = nd / lend;
+        bool pos = false, neg = false;
         for (std::size_t m = 0; m < n && !(pos && neg); ++m) {
-          const Real s = nrm.dot(points[m] - points[i]);
-          pos |= s > tol;
-          neg |= s < -tol;
-          off_plane |= std::abs(s) > tol;
+          const double sd = ud.dot(pd[order[m]] - pd[i]);
+          pos |= sd > side_tol;
+          neg |= sd < -side_tol;
         }
         if (pos && neg) continue;
         ++ans.facets;
         consider(closest_on_triangle(V3::Zero(), points[i], points[j], points[k]));
-        if (!off_plane) continue;  // flat set: no inside test, the triangles decide
-        ans.full_dimensional = true;
-        const V3 outward = (neg ? nrm : V3(-nrm)) / len;   // points lie on the inner side
+        const V3 u = (points[j] - points[i]).cross(points[k] - points[i]).normalized();
+        const V3 outward = neg ? u : V3(-u);               // the points lie on the inner side
         const Real origin_side = -outward.dot(points[i]);  // signed distance of the origin
         if (origin_side > 0) origin_outside_a_facet = true;
         min_facet_distance = std::min(min_facet_distance, -origin_side);
       }
-  if (ans.full_dimensional && !origin_outside_a_facet) {
+  if (!flat && !origin_outside_a_facet) {
     ans.distance = 0;
     ans.closest = V3::Zero();
     ans.depth = std::max(Real(0), min_facet_distance);

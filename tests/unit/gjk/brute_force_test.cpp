@@ -1,0 +1,128 @@
+// GJK distance and intersect against brute force (tests/oracle/brute_force.hpp): box pairs by the
+// separating-axis test and by the Minkowski difference of their corners, and pairs of small point
+// sets (including 1-, 2- and 3-point and flat sets) by the Minkowski difference of their points.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "mink/mink.hpp"
+#include "oracle/brute_force.hpp"
+#include "oracle/check.hpp"
+#include "oracle/random.hpp"
+
+namespace {
+
+using mink::Pose;
+using mink::Vec3;
+using oracle::Real;
+using oracle::Rng;
+using oracle::V3;
+using oracle::widen;
+
+Real max_dot(const std::vector<V3>& points, const V3& n) {
+  Real best = -std::numeric_limits<Real>::infinity();
+  for (const V3& p : points) best = std::max(best, n.dot(p));
+  return best;
+}
+
+/// The witnesses lie on the support planes of the two sets along the normal (tolerance 1e-9
+/// relative to size + position), which with point_b - point_a = distance * normal pins them to
+/// the closest features even when they are not unique.
+void expect_witnesses_on_support_planes(const mink::DistanceResult& got,
+                                        const std::vector<V3>& a_points,
+                                        const std::vector<V3>& b_points, double scale) {
+  if (got.status != mink::Status::Separated) return;
+  const V3 n = widen(got.normal);
+  const double ha = static_cast<double>(max_dot(a_points, n));
+  const double hb = static_cast<double>(max_dot(b_points, V3(-n)));
+  EXPECT_NEAR(got.normal.dot(got.point_a), ha, 1e-9 * scale)
+      << "point_a is not on A's support plane along the normal (tolerance 1e-9 * " << scale << ")";
+  EXPECT_NEAR(-got.normal.dot(got.point_b), hb, 1e-9 * scale)
+      << "point_b is not on B's support plane along -normal (tolerance 1e-9 * " << scale << ")";
+}
+
+TEST(GjkDistance, BoxBoxMatchesBruteForceAndSat) {
+  const std::uint64_t base = 10000;
+  const int n = oracle::sweep_count(1000);
+  oracle::Worst worst("box-box");
+  int sat_separated = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const mink::Box a{
+        Vec3(rng.log_uniform(0.02, 2), rng.log_uniform(0.02, 2), rng.log_uniform(0.02, 2))};
+    const mink::Box b{
+        Vec3(rng.log_uniform(0.02, 2), rng.log_uniform(0.02, 2), rng.log_uniform(0.02, 2))};
+    const double size = a.half_extents.norm() + b.half_extents.norm();
+    const Pose pa = rng.pose(5);
+    const Pose pb = Pose::from(pa.translation + rng.in_ball(1.3 * size), rng.rotation());
+    const oracle::WorldBox wa{widen(a.half_extents), widen(pa.rotation), widen(pa.translation)};
+    const oracle::WorldBox wb{widen(b.half_extents), widen(pb.rotation), widen(pb.translation)};
+    const auto ca = oracle::box_corners(wa), cb = oracle::box_corners(wb);
+    const auto expected = oracle::polytope_pair(ca, cb);
+    const auto sat = oracle::sat_box_box(wa, wb);
+    const double band = oracle::kTouchingBand * size;
+    // The two oracles must agree on the flag, and SAT bounds the distance from below.
+    if (sat.separation > band) {
+      ++sat_separated;
+      ASSERT_GT(expected.gap, 0) << "oracles disagree: SAT separation " << (double)sat.separation;
+      ASSERT_GE(expected.distance, sat.separation - Real(1e-12) * size);
+    } else if (sat.separation < -band) {
+      ASSERT_LE(expected.gap, 0) << "oracles disagree: SAT separation " << (double)sat.separation;
+    }
+    const auto got = mink::distance(a, pa, b, pb);
+    const auto got_bool = mink::intersect(a, pa, b, pb);
+    oracle::expect_matches(expected, got, got_bool, size, pa.translation.norm(), false, worst);
+    if (sat.separation > band) {
+      EXPECT_GE(got.distance, double(sat.separation) - 1e-10 * size);
+    }
+    expect_witnesses_on_support_planes(got, ca, cb, size + pa.translation.norm());
+  }
+  EXPECT_GT(sat_separated, n / 4) << "the sweep should be mostly separated cases";
+}
+
+/// A random small point set in a local frame: 1 to 8 points, sometimes flat, collinear, or with
+/// duplicates, of scale about `scale`.
+std::vector<Vec3> random_point_set(Rng& rng, double scale) {
+  const int count = rng.integer(1, 8);
+  const int kind = rng.integer(0, 5);
+  std::vector<Vec3> pts;
+  const Vec3 u = rng.unit(), v = rng.unit();
+  for (int i = 0; i < count; ++i) {
+    Vec3 p = rng.in_ball(scale);
+    if (kind == 0) p = p - p.dot(u) * u;                // flat: in the plane normal to u
+    if (kind == 1) p = rng.uniform(-scale, scale) * v;  // collinear
+    if (kind == 2 && i > 0 && rng.chance(0.5)) p = pts[rng.integer(0, i - 1)];  // duplicates
+    pts.push_back(p);
+  }
+  return pts;
+}
+
+TEST(GjkDistance, PolytopePairMatchesBruteForce) {
+  const std::uint64_t base = 20000;
+  const int n = oracle::sweep_count(3000);
+  oracle::Worst worst("polytope-polytope");
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const double sa = rng.log_uniform(0.05, 2), sb = rng.log_uniform(0.05, 2);
+    const auto la = random_point_set(rng, sa), lb = random_point_set(rng, sb);
+    const auto a = mink::Polytope::make(la), b = mink::Polytope::make(lb);
+    ASSERT_TRUE(a && b);
+    const double size = a->bounding_radius() + b->bounding_radius() + 1e-3;
+    const Pose pa = rng.pose(5);
+    const Pose pb = Pose::from(pa.translation + rng.in_ball(1.0 * (sa + sb)), rng.rotation());
+    std::vector<V3> wa, wb;
+    for (const Vec3& p : la) wa.push_back(widen(pa.rotation) * widen(p) + widen(pa.translation));
+    for (const Vec3& p : lb) wb.push_back(widen(pb.rotation) * widen(p) + widen(pb.translation));
+    const auto expected = oracle::polytope_pair(wa, wb);
+    const auto got = mink::distance(*a, pa, *b, pb);
+    const auto got_bool = mink::intersect(*a, pa, *b, pb);
+    oracle::expect_matches(expected, got, got_bool, size, pa.translation.norm(), false, worst);
+    expect_witnesses_on_support_planes(got, wa, wb, size + pa.translation.norm());
+  }
+}
+
+}  // namespace
