@@ -1,0 +1,220 @@
+// Answers checked against independent, hand-computed values (sphere-sphere |c| - r1 - r2,
+// axis-aligned box gaps, point-box corner distances, capsule axes), and the fields each `want`
+// writes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "answer_check.hpp"
+#include "json_writer.hpp"
+
+namespace mink::cli::test {
+namespace {
+
+std::string num(double x) {
+  std::string out;
+  append_number(out, x);
+  return out;
+}
+
+std::string vec(const Vec3& v) {
+  std::string out;
+  append_vec3(out, v);
+  return out;
+}
+
+/// Every separated answer satisfies point_b - point_a = distance * normal, |normal| = 1.
+void expect_consistent(const Answer& a, double tolerance) {
+  ASSERT_TRUE(a.normal && a.point_a && a.point_b) << a.raw;
+  EXPECT_NEAR(a.normal->norm(), 1.0, 1e-12) << a.raw;
+  EXPECT_LE((*a.point_b - *a.point_a - *a.distance * *a.normal).norm(), tolerance) << a.raw;
+}
+
+TEST(QueryAnswer, SphereSphereMatchesAnalytic) {
+  const unsigned seed = 7;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> coordinate(-10, 10), radius(0.01, 2);
+  for (int i = 0; i < 500; ++i) {
+    const Vec3 ca(coordinate(rng), coordinate(rng), coordinate(rng));
+    const Vec3 cb(coordinate(rng), coordinate(rng), coordinate(rng));
+    const double ra = radius(rng), rb = radius(rng);
+    const double expected = (cb - ca).norm() - ra - rb;
+    const Answer a = answer_one(R"({"a":{"type":"sphere","radius":)" + num(ra) + R"(},"pa":{"t":)" +
+                                vec(ca) + R"(},"b":{"type":"sphere","radius":)" + num(rb) +
+                                R"(},"pb":{"t":)" + vec(cb) + "}}");
+    // Tolerance: a few ulps of the coordinates (|c| <= 20).
+    const double tolerance = 1e-13 * 20;
+    if (expected > tolerance) {
+      ASSERT_EQ(a.status, "ok") << a.raw << " (seed " << seed << ")";
+      EXPECT_EQ(a.intersect, false);
+      EXPECT_NEAR(*a.distance, expected, tolerance) << a.raw;
+      EXPECT_EQ(a.depth, 0.0);
+      expect_consistent(*&a, tolerance);
+      const Vec3 n = (cb - ca).normalized();
+      EXPECT_LE((*a.normal - n).norm(), 1e-12) << a.raw;
+      EXPECT_LE((*a.point_a - (ca + ra * n)).norm(), tolerance) << a.raw;
+      EXPECT_LE((*a.point_b - (cb - rb * n)).norm(), tolerance) << a.raw;
+    } else if (expected < -tolerance) {
+      EXPECT_EQ(a.status, "unsupported") << a.raw;
+      EXPECT_EQ(a.intersect, true);
+      EXPECT_EQ(a.distance, 0.0);
+    }
+  }
+}
+
+TEST(QueryAnswer, AxisAlignedBoxGaps) {
+  // Box A half extents (1,2,3) at the origin; box B half extents (0.5,0.5,0.5) shifted along each
+  // axis so that the gap is exactly 0.25 (all values are exact in binary).
+  const std::string a = R"({"type":"box","half_extents":[1,2,3]})";
+  const std::string b = R"({"type":"box","half_extents":[0.5,0.5,0.5]})";
+  const Vec3 half_a(1, 2, 3);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const double sign : {1.0, -1.0}) {
+      Vec3 t = Vec3::Zero();
+      t[axis] = sign * (half_a[axis] + 0.5 + 0.25);
+      const Answer r = answer_one(R"({"a":)" + a + R"(,"b":)" + b + R"(,"pb":{"t":)" + vec(t) +
+                                  R"(},"want":"distance"})");
+      ASSERT_EQ(r.status, "ok") << r.raw;
+      EXPECT_EQ(r.distance, 0.25) << r.raw;
+      Vec3 n = Vec3::Zero();
+      n[axis] = sign;
+      EXPECT_LE((*r.normal - n).norm(), 1e-15) << r.raw;
+      EXPECT_NEAR((*r.point_a)[axis], sign * half_a[axis], 1e-15) << r.raw;
+      EXPECT_FALSE(r.depth.has_value()) << "want distance has no depth: " << r.raw;
+      expect_consistent(r, 1e-15);
+    }
+  }
+}
+
+TEST(QueryAnswer, RotatedBoxSwapsItsExtents) {
+  // B (half extents 3,0.5,0.5) turned 90 degrees about z reaches 3 along y and 0.5 along x.
+  const double h = std::sqrt(0.5);
+  // Built by appending: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string chains.
+  std::string q = "[";
+  q.append(num(h)).append(",0,0,").append(num(h)).append("]");
+  const Answer r = answer_one(
+      R"({"a":{"type":"box","half_extents":[1,1,1]},"b":{"type":"box","half_extents":[3,0.5,0.5]},)"
+      R"("pb":{"t":[2,0,0],"q":)" +
+      q + "}}");
+  ASSERT_EQ(r.status, "ok") << r.raw;
+  EXPECT_NEAR(*r.distance, 0.5, 1e-15) << r.raw;
+}
+
+TEST(QueryAnswer, PointToBoxCorner) {
+  // The closest point of the box [-1,1]^3 to (2,3,4) is its corner (1,1,1): distance sqrt(14).
+  const Answer r = answer_one(
+      R"({"a":{"type":"box","half_extents":[1,1,1]},"b":{"type":"point","points":[[2,3,4]]}})");
+  ASSERT_EQ(r.status, "ok") << r.raw;
+  EXPECT_NEAR(*r.distance, std::sqrt(14.0), 1e-15);
+  EXPECT_LE((*r.point_a - Vec3(1, 1, 1)).norm(), 1e-15) << r.raw;
+  EXPECT_LE((*r.point_b - Vec3(2, 3, 4)).norm(), 1e-15) << r.raw;
+}
+
+TEST(QueryAnswer, CapsuleTurnedOntoTheXAxis) {
+  // A capsule (radius 0.5, half height 2) turned 90 degrees about y lies along x from -2 to 2;
+  // a unit sphere at (5,0,0) is 5 - 2 - 0.5 - 1 = 1.5 away, and one at (0,0,4) 4 - 0.5 - 1.
+  const double h = std::sqrt(0.5);
+  const std::string capsule = R"("a":{"type":"capsule","radius":0.5,"half_height":2},"pa":{"q":[)" +
+                              num(h) + ",0," + num(h) + ",0]}";
+  const std::string sphere = R"("b":{"type":"sphere","radius":1})";
+  EXPECT_NEAR(*answer_one("{" + capsule + "," + sphere + R"(,"pb":{"t":[5,0,0]}})").distance, 1.5,
+              1e-14);
+  EXPECT_NEAR(*answer_one("{" + capsule + "," + sphere + R"(,"pb":{"t":[0,0,4]}})").distance, 2.5,
+              1e-14);
+}
+
+TEST(QueryAnswer, SumOfSegmentAndSphereIsACapsule) {
+  const std::string b = R"("b":{"type":"sphere","radius":1},"pb":{"t":[0,3,0.5]})";
+  const Answer sum =
+      answer_one(R"({"a":{"type":"sum","shapes":[{"type":"segment","points":[[0,0,-1],[0,0,1]]},)"
+                 R"({"type":"sphere","radius":0.5}]},)" +
+                 b + "}");
+  const Answer capsule =
+      answer_one(R"({"a":{"type":"capsule","radius":0.5,"half_height":1},)" + b + "}");
+  ASSERT_EQ(sum.status, "ok") << sum.raw;
+  EXPECT_NEAR(*sum.distance, 1.5, 1e-14);
+  EXPECT_NEAR(*sum.distance, *capsule.distance, 1e-14);
+}
+
+TEST(QueryAnswer, RoundedBoxAddsItsRadius) {
+  const Answer r = answer_one(
+      R"({"a":{"type":"rounded","shape":{"type":"box","half_extents":[1,1,1]},"radius":0.25},)"
+      R"("b":{"type":"point","points":[[3,0,0]]}})");
+  ASSERT_EQ(r.status, "ok") << r.raw;
+  EXPECT_NEAR(*r.distance, 1.75, 1e-15);
+}
+
+TEST(QueryAnswer, TouchingSpheresIntersect) {
+  const Answer r = answer_one(R"({"a":{"type":"sphere","radius":1},"b":{"type":"sphere",)"
+                              R"("radius":1},"pb":{"t":[2,0,0]},"want":"distance"})");
+  EXPECT_EQ(r.status, "ok") << r.raw;
+  EXPECT_EQ(r.intersect, true);
+  EXPECT_EQ(r.distance, 0.0);
+  EXPECT_FALSE(r.normal.has_value()) << r.raw;
+}
+
+TEST(QueryAnswer, FieldsOfEachWant) {
+  const std::string apart = R"({"a":{"type":"box","half_extents":[1,1,1]},"b":{"type":"box",)"
+                            R"("half_extents":[1,1,1]},"pb":{"t":[3,0,0]})";
+  const std::string overlapping = R"({"a":{"type":"box","half_extents":[1,1,1]},"b":{"type":)"
+                                  R"("box","half_extents":[1,1,1]},"pb":{"t":[1.5,0,0]})";
+  using Keys = std::set<std::string>;
+  const Keys separated_distance = {"id",     "status",  "intersect", "distance",
+                                   "normal", "point_a", "point_b",   "iterations"};
+  Keys separated_contact = separated_distance;
+  separated_contact.insert("depth");
+
+  EXPECT_EQ(answer_one(apart + R"(,"want":"intersect"})").keys,
+            (Keys{"id", "status", "intersect", "iterations"}));
+  EXPECT_EQ(answer_one(apart + R"(,"want":"distance"})").keys, separated_distance);
+  EXPECT_EQ(answer_one(apart + R"(,"want":"contact"})").keys, separated_contact);
+  EXPECT_EQ(answer_one(apart + "}").keys, separated_contact) << "contact is the default";
+  EXPECT_EQ(answer_one(apart + "}").depth, 0.0);
+
+  const Answer hit = answer_one(overlapping + R"(,"want":"intersect"})");
+  EXPECT_EQ(hit.status, "ok");
+  EXPECT_EQ(hit.intersect, true);
+  EXPECT_GT(*hit.iterations, 0);
+  const Answer hit_distance = answer_one(overlapping + R"(,"want":"distance"})");
+  EXPECT_EQ(hit_distance.keys, (Keys{"id", "status", "intersect", "distance", "iterations"}));
+  EXPECT_EQ(hit_distance.distance, 0.0);
+  const Answer hit_contact = answer_one(overlapping + "}");
+  EXPECT_EQ(hit_contact.status, "unsupported");
+  EXPECT_EQ(hit_contact.intersect, true);
+  EXPECT_EQ(hit_contact.distance, 0.0);
+  EXPECT_NE(hit_contact.error.find("EPA"), std::string::npos) << hit_contact.raw;
+  EXPECT_EQ(hit_contact.keys, (Keys{"id", "status", "intersect", "distance", "error"}));
+}
+
+TEST(QueryAnswer, TimingAddsMicroseconds) {
+  const std::string line = R"({"a":{"type":"sphere","radius":1},"b":{"type":"box",)"
+                           R"("half_extents":[1,1,1]},"pb":{"t":[3,0,0]})";
+  for (const char* want : {"intersect", "distance", "contact"}) {
+    const auto answers = answer(line + R"(,"want":")" + want + "\"}", true);
+    ASSERT_EQ(answers.size(), 1u);
+    ASSERT_TRUE(answers[0].us.has_value()) << answers[0].raw;
+    EXPECT_GE(*answers[0].us, 0.0);
+    EXPECT_TRUE(std::isfinite(*answers[0].us));
+  }
+  EXPECT_FALSE(answer(line + "}", false)[0].us.has_value());
+  // Error lines carry no time.
+  EXPECT_FALSE(answer("{}", true)[0].us.has_value());
+}
+
+TEST(QueryAnswer, NumbersInAnswersReadBackToTheSameDouble) {
+  // 1/3-ish inputs give distances with all 17 digits; the text must parse back bit for bit to
+  // what the writer was given, which the JSON reader (simdjson) and the writer agree on.
+  const Answer r = answer_one(R"({"a":{"type":"sphere","radius":0.3333333333333333},)"
+                              R"("b":{"type":"sphere","radius":0.1},"pb":{"t":[1,1,1]}})");
+  ASSERT_EQ(r.status, "ok");
+  const std::size_t at = r.raw.find("\"distance\":") + 11;
+  const std::string text = r.raw.substr(at, r.raw.find(',', at) - at);
+  EXPECT_EQ(std::strtod(text.c_str(), nullptr), *r.distance) << text;
+  EXPECT_NEAR(*r.distance, std::sqrt(3.0) - 0.3333333333333333 - 0.1, 1e-15);
+  EXPECT_GE(text.size(), 15u) << "not rounded to a few digits";
+}
+
+}  // namespace
+}  // namespace mink::cli::test
