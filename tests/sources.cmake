@@ -3,5 +3,8 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/smoke_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/analytic_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/brute_force_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/nasty_cases_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/bad_input_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/float_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/property/gjk_property_test.cpp
 )

@@ -1,0 +1,59 @@
+// The query templates instantiated with float: answers within float accuracy of the analytic
+// ones (computed in long double by tests/oracle/analytic.hpp).
+#include <gtest/gtest.h>
+
+#include "mink/mink.hpp"
+#include "oracle/analytic.hpp"
+#include "oracle/random.hpp"
+
+namespace {
+
+using PoseF = mink::PoseT<float>;
+using Vec3F = mink::Vec3T<float>;
+
+TEST(GjkFloat, SphereAndBoxMatchAnalytic) {
+  const std::uint64_t base = 70000;
+  const int n = oracle::sweep_count(500);
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    oracle::Rng rng(seed);
+    const mink::SphereT<float> s{float(rng.uniform(0.2, 1))};
+    const mink::BoxT<float> b{
+        Vec3F(float(rng.uniform(0.2, 1)), float(rng.uniform(0.2, 1)), float(rng.uniform(0.2, 1)))};
+    const mink::Quat qd = rng.rotation();
+    const PoseF pb = PoseF::from(Vec3F::Zero(), qd.cast<float>());
+    const PoseF ps = PoseF::from_translation(rng.in_ball(3).cast<float>());
+    // The oracle sees exactly the float inputs, widened.
+    const oracle::WorldBox wb{b.half_extents.cast<oracle::Real>(), pb.rotation.cast<oracle::Real>(),
+                              oracle::V3::Zero()};
+    const auto expected = oracle::sphere_box(ps.translation.cast<oracle::Real>(), s.radius, wb);
+    const auto got = mink::distance(s, ps, b, pb);
+    const auto got_bool = mink::intersect(s, ps, b, pb);
+    const float size = s.radius + b.half_extents.norm();
+    ASSERT_TRUE(std::isfinite(got.distance));
+    // Float tolerance: 1e-5 of the size (64 float epsilons is about 8e-6).
+    const float tol = 1e-5f * size;
+    if (expected.gap > tol) {
+      EXPECT_FALSE(got.intersect);
+      EXPECT_FALSE(got_bool.intersect);
+      EXPECT_NEAR(got.distance, float(expected.distance), tol);
+      if (expected.gap > 0.01f) {
+        EXPECT_LE((got.normal - expected.normal.cast<float>()).norm(), 1e-3f);
+      }
+    } else if (expected.gap < -tol) {
+      EXPECT_TRUE(got.intersect);
+      EXPECT_TRUE(got_bool.intersect);
+    }
+  }
+}
+
+TEST(GjkFloat, SpheresApartExample) {
+  const mink::SphereT<float> a{1.0f}, b{0.5f};
+  const auto r = mink::distance(a, PoseF::identity(), b, PoseF::from_translation(Vec3F(3, 0, 0)));
+  EXPECT_EQ(r.status, mink::Status::Separated);
+  EXPECT_NEAR(r.distance, 1.5f, 1e-6f);
+  EXPECT_NEAR(r.normal.x(), 1.0f, 1e-6f);
+}
+
+}  // namespace

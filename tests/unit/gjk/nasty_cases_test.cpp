@@ -1,0 +1,250 @@
+// Hand-built hard cases for distance() and intersect(): exact contact, parallel features, flat
+// and needle polytopes, duplicate points, extreme scales and offsets, coincident shapes,
+// degenerate point sets, and curved shapes a hair from touching. Expected values are worked out
+// by hand or by the oracles in tests/oracle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "mink/mink.hpp"
+#include "oracle/brute_force.hpp"
+#include "oracle/check.hpp"
+
+namespace {
+
+using mink::Box;
+using mink::Pose;
+using mink::Quat;
+using mink::Vec3;
+
+Pose at(double x, double y, double z) {
+  return Pose::from_translation(Vec3(x, y, z));
+}
+
+Pose rotated(const Vec3& t, double angle, const Vec3& axis) {
+  return Pose::from(t, Quat(Eigen::AngleAxisd(angle, axis.normalized())));
+}
+
+template <class A, class B>
+void expect_touching(const A& a, const Pose& pa, const B& b, const Pose& pb, double size) {
+  const auto r = mink::distance(a, pa, b, pb);
+  const auto i = mink::intersect(a, pa, b, pb);
+  EXPECT_FALSE(oracle::has_nan(r));
+  EXPECT_TRUE(r.intersect) << "distance " << r.distance;
+  EXPECT_EQ(r.distance, 0.0);
+  EXPECT_TRUE(i.intersect);
+  EXPECT_LE(r.distance, 1e-12 * size);
+}
+
+template <class A, class B>
+void expect_separated(const A& a, const Pose& pa, const B& b, const Pose& pb, double distance,
+                      double tol, const Vec3& normal = Vec3::Zero()) {
+  const auto r = mink::distance(a, pa, b, pb);
+  const auto i = mink::intersect(a, pa, b, pb);
+  EXPECT_FALSE(oracle::has_nan(r));
+  EXPECT_EQ(r.status, mink::Status::Separated);
+  EXPECT_FALSE(i.intersect);
+  EXPECT_NEAR(r.distance, distance, tol);
+  if (normal != Vec3::Zero()) {
+    EXPECT_LE((r.normal - normal).norm(), 1e-9) << "normal " << r.normal.transpose();
+  }
+  EXPECT_LE((r.point_b - r.point_a - r.distance * r.normal).norm(), tol);
+}
+
+TEST(GjkNasty, BoxesFaceToFaceAtExactContact) {
+  const Box a{Vec3(1, 1, 1)}, b{Vec3(1, 1, 1)};
+  expect_touching(a, Pose::identity(), b, at(2, 0, 0), 3.5);
+  expect_touching(a, Pose::identity(), b, at(2, 0.5, 0.3), 3.5);
+  expect_touching(a, Pose::identity(), b, at(0, 0, -2), 3.5);
+  expect_touching(a, at(10, 20, 30), b, at(12, 20.25, 30), 3.5);
+  // Same rotation for both: contact is exact up to the rounding of the rotated offset.
+  const Quat q(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  expect_touching(a, Pose::from(Vec3::Zero(), q), b, Pose::from(q * Vec3(2, 0.1, 0.2), q), 3.5);
+}
+
+TEST(GjkNasty, SphereRestingOnFace) {
+  const Box box{Vec3(2, 1, 0.5)};
+  expect_touching(mink::Sphere{1}, at(0.3, 0.2, 1.5), box, Pose::identity(), 3.5);
+  expect_touching(mink::Sphere{1}, at(2, 1, 1.5), box, Pose::identity(), 3.5);  // above a corner
+  expect_separated(mink::Sphere{1}, at(0.3, 0.2, 1.5 + 1e-9), box, Pose::identity(), 1e-9, 1e-15,
+                   Vec3(0, 0, -1));
+}
+
+TEST(GjkNasty, EdgeOnEdge) {
+  // A: unit cube turned 45 degrees about x, so its top is an edge along x at z = sqrt(2).
+  // B: the same turned about y, bottom edge along y; placed at z = 2 sqrt(2) the edges cross.
+  const Box cube{Vec3(1, 1, 1)};
+  const double s2 = std::sqrt(2.0);
+  const Pose pa = rotated(Vec3::Zero(), M_PI / 4, Vec3::UnitX());
+  expect_touching(cube, pa, cube, rotated(Vec3(0, 0, 2 * s2), M_PI / 4, Vec3::UnitY()), 3.5);
+  // Lifted by 1e-6: the distance is the lift, along +z.
+  expect_separated(cube, pa, cube, rotated(Vec3(0, 0, 2 * s2 + 1e-6), M_PI / 4, Vec3::UnitY()),
+                   1e-6, 1e-14, Vec3::UnitZ());
+}
+
+TEST(GjkNasty, ParallelFacesAndEdges) {
+  const Box a{Vec3(1, 1, 1)}, b{Vec3(0.5, 2, 0.25)};
+  expect_separated(a, Pose::identity(), b, at(2.0, 0.3, 0.1), 0.5, 1e-15, Vec3::UnitX());
+  // Parallel capsules: segments overlap along z, so the points are not unique.
+  const mink::Capsule c{0.25, 1};
+  expect_separated(c, Pose::identity(), c, at(3, 0, 0.5), 2.5, 1e-15, Vec3::UnitX());
+  // Parallel segments offset in y.
+  const mink::Segment s{Vec3(-1, 0, 0), Vec3(1, 0, 0)};
+  expect_separated(s, Pose::identity(), s, at(0.5, 2, 0), 2.0, 1e-15, Vec3::UnitY());
+  // Collinear segments with a gap.
+  expect_separated(s, Pose::identity(), s, at(2.5, 0, 0), 0.5, 1e-15, Vec3::UnitX());
+}
+
+TEST(GjkNasty, FlatAndNeedlePolytopes) {
+  const std::vector<Vec3> square{Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0),
+                                 Vec3(0, 0, 0)};
+  const auto flat = mink::Polytope::make(square);
+  ASSERT_TRUE(flat);
+  expect_separated(mink::Sphere{0.5}, at(0.2, 0.3, 1.5), *flat, Pose::identity(), 1.0, 1e-15,
+                   Vec3(0, 0, -1));
+  expect_separated(mink::Sphere{0.5}, at(3, 0, 0), *flat, Pose::identity(), 1.5, 1e-15,
+                   Vec3(-1, 0, 0));
+  expect_touching(mink::Sphere{0.5}, at(0.2, 0.3, 0.5), *flat, Pose::identity(), 2);
+  // A needle: points along x with 1e-9 jitter across it.
+  std::vector<Vec3> needle;
+  for (int i = 0; i <= 10; ++i)
+    needle.push_back(Vec3(i * 0.2 - 1, 1e-9 * (i % 3), -1e-9 * (i % 2)));
+  const auto n = mink::Polytope::make(needle);
+  ASSERT_TRUE(n);
+  std::vector<oracle::V3> world;
+  for (const Vec3& p : needle) world.push_back(oracle::widen(p));
+  const Vec3 x(0.3, 0.7, 0.4);
+  const auto expected = oracle::polytope_pair({oracle::widen(x)}, world);
+  expect_separated(mink::Point{}, at(x.x(), x.y(), x.z()), *n, Pose::identity(),
+                   double(expected.distance), 1e-14);
+}
+
+TEST(GjkNasty, DuplicatePoints) {
+  std::vector<Vec3> pts;
+  for (int rep = 0; rep < 10; ++rep)
+    for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)})
+      pts.push_back(p);
+  const auto tet = mink::Polytope::make(pts);
+  ASSERT_TRUE(tet);
+  // The face x + y + z = 1 faces the point (1, 1, 1): distance (3 - 1) / sqrt(3).
+  expect_separated(*tet, Pose::identity(), mink::Point{Vec3(1, 1, 1)}, Pose::identity(),
+                   2 / std::sqrt(3.0), 1e-15, Vec3(1, 1, 1).normalized());
+  expect_separated(*tet, Pose::identity(), Box{Vec3(0.5, 0.5, 0.5)}, at(-1, 0.2, 0.2), 0.5, 1e-15,
+                   Vec3(-1, 0, 0));
+}
+
+TEST(GjkNasty, ExtremeScaleRatios) {
+  // A 1e-6 sphere near a 1e6 box face; tolerance 1e-10 of the size (1.7e6): 2e-4 absolute.
+  const Box big{Vec3(1e6, 1e6, 1e6)};
+  const double size_big = std::sqrt(3.0) * 1e6;
+  expect_separated(mink::Sphere{1e-6}, at(0.5, 0.25, 1e6 + 2e-6 + 1), big, Pose::identity(),
+                   1 + 1e-6, 1e-10 * size_big, Vec3(0, 0, -1));
+  expect_touching(mink::Sphere{1e-6}, at(0.5, 0.25, 1e6 + 1e-6), big, Pose::identity(), size_big);
+  // Both tiny: relative accuracy holds at 1e-6 scale.
+  const Box tiny{Vec3(1e-6, 1e-6, 1e-6)};
+  expect_separated(tiny, Pose::identity(), tiny, at(3e-6, 0, 0), 1e-6, 1e-10 * 3.5e-6,
+                   Vec3::UnitX());
+  // Huge pair at distance 1e6.
+  expect_separated(big, Pose::identity(), big, at(3e6, 0, 5e5), 1e6, 1e-10 * 2 * size_big,
+                   Vec3::UnitX());
+}
+
+TEST(GjkNasty, FarFromOrigin) {
+  // The pair of the smoke test, moved 1e6 away: the answer must not lose the 1e-10 bar.
+  const Box a{Vec3(1, 1, 1)};
+  const mink::Sphere s{0.5};
+  const Vec3 far(1e6, -2e6, 3e6);
+  const Quat q(Eigen::AngleAxisd(0.3, Vec3(0, 0, 1)));
+  expect_separated(a, Pose::from(far, q), s, Pose::from_translation(far + q * Vec3(2.5, 0.2, 0.1)),
+                   1.0, 1e-10 * 3, q * Vec3::UnitX());
+  const mink::Capsule c{0.25, 1};
+  expect_separated(c, at(1e6, 1e6, 1e6), c, at(1e6 + 1, 1e6, 1e6 + 0.5), 0.5, 1e-10 * 2.5,
+                   Vec3::UnitX());
+}
+
+TEST(GjkNasty, CoincidentShapes) {
+  const Box box{Vec3(1, 2, 3)};
+  const Pose p = rotated(Vec3(1, 2, 3), 0.4, Vec3(1, 1, 0));
+  expect_touching(box, p, box, p, 8);
+  expect_touching(mink::Sphere{1}, p, mink::Sphere{1}, p, 2);
+  expect_touching(mink::Point{Vec3(1, 2, 3)}, p, mink::Point{Vec3(1, 2, 3)}, p, 8);
+  expect_touching(mink::Segment{Vec3(0, 0, 0), Vec3(1, 0, 0)}, p,
+                  mink::Segment{Vec3(0, 0, 0), Vec3(1, 0, 0)}, p, 2);
+  const auto tri = mink::Triangle{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  expect_touching(tri, p, tri, p, 2);
+  const mink::Ellipsoid e{Vec3(1, 0.5, 0.25)};
+  expect_touching(e, p, e, p, 2);
+  const auto poly = mink::Polytope::make(
+      std::vector<Vec3>{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)});
+  ASSERT_TRUE(poly);
+  expect_touching(*poly, p, *poly, p, 2);
+}
+
+TEST(GjkNasty, DegeneratePointSets) {
+  // 1, 2 and 3 points against a box, compared with the brute-force oracle.
+  const Box box{Vec3(0.5, 0.5, 0.5)};
+  const Pose pb = rotated(Vec3(0.1, -0.2, 0.3), 0.9, Vec3(1, -2, 0.5));
+  const oracle::WorldBox wb{oracle::V3(0.5, 0.5, 0.5), oracle::widen(pb.rotation),
+                            oracle::widen(pb.translation)};
+  const std::vector<std::vector<Vec3>> sets{
+      {Vec3(2, 1, 0.5)},
+      {Vec3(2, 1, 0.5), Vec3(-1, 2, 0.3)},
+      {Vec3(2, 1, 0.5), Vec3(-1, 2, 0.3), Vec3(0.5, 1.5, 2)},
+      {Vec3(2, 1, 0.5), Vec3(2, 1, 0.5), Vec3(2, 1, 0.5)},    // one point thrice
+      {Vec3(2, 1, 0.5), Vec3(3, 1.5, 0.5), Vec3(4, 2, 0.5)},  // collinear
+  };
+  for (const auto& set : sets) {
+    SCOPED_TRACE(testing::Message() << "set of " << set.size() << " points");
+    const auto poly = mink::Polytope::make(set);
+    ASSERT_TRUE(poly);
+    std::vector<oracle::V3> world;
+    for (const Vec3& p : set) world.push_back(oracle::widen(p));
+    const auto expected = oracle::polytope_pair(world, oracle::box_corners(wb));
+    ASSERT_GT(expected.gap, 0);
+    expect_separated(*poly, Pose::identity(), box, pb, double(expected.distance), 1e-14,
+                     expected.normal.cast<double>());
+  }
+}
+
+/// Distance from a rotated curved shape's lowest point to a box's top face (z = 0), when the
+/// shape's centre is at height `z`: z - h(-e_z), where h is the shape's support value (its own
+/// formula here, not mink's).
+TEST(GjkNasty, CurvedShapesNearTouching) {
+  const Box floor{Vec3(10, 10, 1)};
+  const Pose pf = at(0, 0, -1);  // top face at z = 0
+  const Quat q(Eigen::AngleAxisd(0.6, Vec3(1, 2, 0.5).normalized()));
+  const Eigen::Vector3d down = q.conjugate() * Vec3(0, 0, -1);  // -e_z in the shape's frame
+  const double rho = std::hypot(down.x(), down.y());
+  const mink::Ellipsoid ell{Vec3(1, 0.5, 0.3)};
+  const mink::Cylinder cyl{0.7, 0.4};
+  const mink::Cone cone{0.6, 0.9};
+  const double h_ell = ell.radii.cwiseProduct(down).norm();
+  const double h_cyl = cyl.radius * rho + cyl.half_height * std::abs(down.z());
+  const double h_cone =
+      std::max(cone.half_height * down.z(), cone.radius * rho - cone.half_height * down.z());
+  const double size = Vec3(10, 10, 1).norm() + 1.2;
+  for (const double gap : {1e-3, 1e-6, 1e-9}) {
+    SCOPED_TRACE(testing::Message() << "gap " << gap);
+    expect_separated(ell, Pose::from(Vec3(0.3, 0.2, h_ell + gap), q), floor, pf, gap, 1e-10 * size,
+                     Vec3(0, 0, -1));
+    expect_separated(cyl, Pose::from(Vec3(0.3, 0.2, h_cyl + gap), q), floor, pf, gap, 1e-10 * size,
+                     Vec3(0, 0, -1));
+    expect_separated(cone, Pose::from(Vec3(0.3, 0.2, h_cone + gap), q), floor, pf, gap,
+                     1e-10 * size, Vec3(0, 0, -1));
+    // Sunk by the same amount: intersecting.
+    EXPECT_TRUE(
+        mink::intersect(ell, Pose::from(Vec3(0.3, 0.2, h_ell - gap), q), floor, pf).intersect);
+    EXPECT_TRUE(
+        mink::intersect(cyl, Pose::from(Vec3(0.3, 0.2, h_cyl - gap), q), floor, pf).intersect);
+    EXPECT_TRUE(
+        mink::intersect(cone, Pose::from(Vec3(0.3, 0.2, h_cone - gap), q), floor, pf).intersect);
+    EXPECT_TRUE(
+        mink::distance(ell, Pose::from(Vec3(0.3, 0.2, h_ell - gap), q), floor, pf).intersect);
+  }
+  // Two ellipsoids nearly touching at their tips along x: gap 1e-9.
+  const mink::Ellipsoid e2{Vec3(2, 0.3, 0.3)};
+  expect_separated(e2, Pose::identity(), e2, at(4 + 1e-9, 0, 0), 1e-9, 1e-10 * 4, Vec3::UnitX());
+}
+
+}  // namespace
