@@ -86,7 +86,10 @@ TEST(GjkDistance, CapsuleCapsuleMatchesAnalytic) {
     const int kind = rng.integer(0, 7);
     const mink::Quat qa(pa.rotation);
     if (kind == 0) qb = qa;
-    if (kind == 1) qb = qa * mink::Quat(Eigen::AngleAxisd(rng.log_uniform(1e-9, 1e-3), rng.unit()));
+    if (kind == 1) {
+      const double angle = rng.log_uniform(1e-9, 1e-3);  // drawn in sequence: reproducible
+      qb = qa * mink::Quat(Eigen::AngleAxisd(angle, rng.unit()));
+    }
     const Pose pb = Pose::from(pa.translation + rng.in_ball(1.2 * size), qb);
     const auto wa =
         oracle::make_capsule(a.radius, a.half_height, widen(pa.rotation), widen(pa.translation));
