@@ -55,7 +55,7 @@ enum class GjkMode {
 template <class S>
 struct GjkOutcome {
   Status status = Status::Separated;
-  SimplexT<S> simplex;  ///< final simplex with weights (empty in boolean mode exits)
+  SimplexT<S> simplex;  ///< final simplex with weights (distance mode only)
   Vec3T<S> v = Vec3T<S>::Zero();  ///< closest point of A - B's core to the origin (A's frame)
   S upper = std::numeric_limits<S>::infinity();  ///< upper bound on the core distance
   S lower = S(0);                                ///< lower bound on the core distance
@@ -107,12 +107,10 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
     const S v_sq = v.squaredNorm();
     if (v_in_set && (simplex.size == 4 || v_sq <= touch * touch)) {
       out.status = Status::Intersecting;
-      out.upper = std::sqrt(v_sq);
       break;
     }
     if (v_in_set && kMode == GjkMode::Boolean && radius > S(0) && v_sq <= inside * inside) {
       out.status = Status::Intersecting;
-      out.upper = std::sqrt(v_sq);
       break;
     }
     if (v_in_set && out.iterations >= tol.max_iterations) {
@@ -122,21 +120,25 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
     SimplexVertexT<S> vertex;
     diff.support(-v, vertex);
     ++out.iterations;
-    const S v_norm = std::sqrt(v_sq);
     const S vw = v.dot(vertex.w);
-    out.lower = std::max(out.lower, vw / v_norm);
-    // Boolean: a separating plane with room for the radii decides.
-    if (kMode == GjkMode::Boolean && out.lower > inside) {
-      out.status = Status::Separated;
-      break;
+    if constexpr (kMode == GjkMode::Boolean) {
+      // A separating plane with room for the radii decides: the lower bound v.w / |v| exceeds
+      // `inside`, squared so the common one-iteration exit needs no square root.
+      if (vw > S(0) && vw * vw > inside * inside * v_sq) {
+        out.status = Status::Separated;
+        break;
+      }
+    } else {
+      out.lower = std::max(out.lower, vw / std::sqrt(v_sq));
     }
     if (v_in_set) {
-      out.upper = v_norm;
-      // Bounds met: |v| - v.w/|v| <= tol * size. Relative to the shapes' size, not to the
-      // distance: far apart shapes still get their distance to within tol * size (or to the
-      // rounding floor, which the no-progress test below catches). Written without the division
-      // so that a NaN makes the comparison false instead of exiting.
-      if (v_sq - vw <= tol.relative * size * v_norm) {
+      // Bounds met: |v| - v.w/|v| <= tol * size, i.e. gap = |v|^2 - v.w <= tol * size * |v|.
+      // Relative to the shapes' size, not to the distance: far apart shapes still get their
+      // distance to within tol * size (or to the rounding floor, which the no-progress test
+      // below catches). A NaN makes both comparisons false instead of exiting.
+      const S gap = v_sq - vw;
+      const S tol_size = tol.relative * size;
+      if (gap <= S(0) || gap * gap <= tol_size * tol_size * v_sq) {
         out.status = Status::Separated;
         break;
       }
@@ -169,8 +171,8 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
     v = next;
     v_in_set = true;
   }
-  out.simplex = buffers[current];
-  const SimplexT<S>& simplex = out.simplex;
+  const SimplexT<S>& simplex = buffers[current];
+  if constexpr (kMode == GjkMode::Distance) out.simplex = simplex;
   out.v = v_in_set ? v : Vec3T<S>::Zero();
   if (v_in_set) out.upper = v.norm();
   if (!(out.upper <= std::numeric_limits<S>::max()) && v_in_set) out.status = Status::InvalidInput;
@@ -191,6 +193,13 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
 
 namespace mink::detail {
 
+/// True when every entry of the pose is finite. Multiplying by zero maps finite values to 0 and
+/// NaN or infinity to NaN, so one vectorised sum decides (allFinite() tests entry by entry).
+template <class S>
+bool pose_is_finite(const PoseT<S>& pose) {
+  return (pose.rotation.array() * S(0)).sum() + (pose.translation.array() * S(0)).sum() == S(0);
+}
+
 /// Why a query cannot run, or nullptr. Poses are checked for finiteness only: an orthonormal
 /// rotation is the caller's contract (pose_error() checks it in full, the JSON front end does).
 template <ConvexShape A, ConvexShape B>
@@ -198,8 +207,8 @@ const char* query_input_error(const A& a, const PoseT<typename A::Scalar>& pose_
                               const PoseT<typename A::Scalar>& pose_b) {
   if (const char* e = a.error()) return e;
   if (const char* e = b.error()) return e;
-  if (!is_finite(pose_a.translation) || !pose_a.rotation.allFinite()) return "pose of A is not finite";
-  if (!is_finite(pose_b.translation) || !pose_b.rotation.allFinite()) return "pose of B is not finite";
+  if (!pose_is_finite(pose_a)) return "pose of A is not finite";
+  if (!pose_is_finite(pose_b)) return "pose of B is not finite";
   return nullptr;
 }
 

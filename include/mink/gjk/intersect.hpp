@@ -6,11 +6,13 @@
 /// the sum of the bounding radii) count as intersecting. Rounded shapes and sums run on their cores
 /// and compare the core distance with the sum of the radii: exact, no sampling of curved surfaces.
 ///
-/// Cost: no allocation, no global state, reentrant. Typically 2-6 support calls per shape; at most
-/// `tolerances.max_iterations`.
+/// Cost: no allocation, no global state, reentrant. Typically 1-6 support calls per shape; at most
+/// `tolerances.max_iterations`. Pairs of spheres, capsules, points and segments (and their
+/// Rounded versions) take a closed form instead (segment_cores.hpp) and report 0 iterations.
 #pragma once
 
 #include "mink/gjk/gjk.hpp"
+#include "mink/gjk/segment_cores.hpp"
 
 namespace mink {
 
@@ -39,6 +41,23 @@ IntersectResultT<typename A::Scalar> intersect(
   using S = typename A::Scalar;
   IntersectResultT<S> result;
   if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
+  if constexpr (detail::kSegmentCores<A, B>) {
+    // Spheres, capsules, points, segments: closed form, no iteration.
+    Vec3T<S> p0, p1, q0, q1, on_a, on_b;
+    detail::SegmentCore<A>::world(a, pose_a, pose_a.translation, p0, p1);
+    detail::SegmentCore<B>::world(b, pose_b, pose_a.translation, q0, q1);
+    detail::closest_points_of_segments(p0, p1, q0, q1, on_a, on_b);
+    const S inside = a.core_radius() + b.core_radius() +
+                     tolerances.relative * (a.bounding_radius() + b.bounding_radius());
+    const S distance_sq = (on_b - on_a).squaredNorm();
+    if (!(distance_sq <= std::numeric_limits<S>::max())) {
+      result.error = detail::kOverflowError;
+      return result;
+    }
+    result.intersect = distance_sq <= inside * inside;
+    result.status = result.intersect ? Status::Intersecting : Status::Separated;
+    return result;
+  }
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const S radius = a.core_radius() + b.core_radius();
   const S size = a.bounding_radius() + b.bounding_radius();
