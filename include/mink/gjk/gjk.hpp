@@ -77,6 +77,11 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
   // back to the previous simplex (no progress) costs nothing.
   SimplexT<S> buffers[2];
   int current = 0;
+  constexpr int kMaxRestarts = 2;
+  int restarts = 0;
+  SimplexT<S> saved;  // best simplex before a restart (distance mode only)
+  Vec3T<S> saved_v = Vec3T<S>::Zero();
+  S saved_sq = std::numeric_limits<S>::infinity();
   const S touch = tol.relative * size;  // core distances up to this count as touching
   const S inside = radius + touch;
 
@@ -163,12 +168,67 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
       break;
     }
     if (v_in_set && next_sq >= v_sq) {
-      // No progress: the rounding floor. The previous simplex is the answer.
-      out.status = Status::Separated;
-      break;
+      // No progress although the bounds may not have met. This happens when one shape is curved
+      // and the other contributes a flat feature (a polytope edge against an ellipsoid): the
+      // simplex mixes support points of A taken at different iterations, so the convex
+      // combination sags inside A's curved surface, and the new w alone cannot lift it within
+      // rounding. Any a - b with a on A and b on B is a point of A - B, so recombine: pair the
+      // newest support point of A with every support point of B in the simplex (and the other
+      // way round). One of those simplices holds the closest point without the sag. If neither
+      // gets closer, this is the rounding floor and the previous simplex is the answer.
+      Vec3T<S> best_v = v;
+      S best_sq = v_sq;
+      for (int side = 0; side < 2; ++side) {
+        SimplexT<S>& trial = buffers[current ^ 1];
+        trial.size = 0;
+        for (int k = 0; k <= simplex.size; ++k) {
+          SimplexVertexT<S> mixed = k < simplex.size ? simplex.vertices[k] : vertex;
+          if (side == 0) mixed.a = vertex.a;
+          else mixed.b = vertex.b;
+          mixed.w = mixed.a - mixed.b;
+          bool repeated = false;
+          for (int m = 0; m < trial.size; ++m) repeated |= trial.vertices[m].w == mixed.w;
+          if (!repeated && trial.size < 4) trial.vertices[trial.size++] = mixed;
+        }
+        const Vec3T<S> candidate = reduce_to_closest(trial, trial);
+        const S candidate_sq = candidate.squaredNorm();
+        if (candidate_sq < best_sq) {
+          best_sq = candidate_sq;
+          best_v = candidate;
+          current ^= 1;  // the trial buffer becomes the simplex
+        }
+        if (best_sq < v_sq) break;
+      }
+      if (!(best_sq < v_sq)) {
+        if constexpr (kMode == GjkMode::Distance) {
+          // Still stuck with the bounds apart: restart from a fresh simplex along v, which sheds
+          // the crowded points; keep the best answer seen in case the restart does no better.
+          if (restarts < kMaxRestarts && v_sq - vw > tol.relative * size * std::sqrt(v_sq)) {
+            ++restarts;
+            if (v_sq < saved_sq) {
+              saved = simplex;
+              saved_v = v;
+              saved_sq = v_sq;
+            }
+            simplex.size = 0;
+            v_in_set = false;
+            continue;
+          }
+        }
+        out.status = Status::Separated;
+        break;
+      }
+      v = best_v;
+      continue;
     }
     current ^= 1;
     v = next;
+    v_in_set = true;
+  }
+  if (saved_sq < std::numeric_limits<S>::infinity() &&
+      (!v_in_set || !(v.squaredNorm() < saved_sq)) && out.status != Status::Intersecting) {
+    buffers[current] = saved;
+    v = saved_v;
     v_in_set = true;
   }
   const SimplexT<S>& simplex = buffers[current];

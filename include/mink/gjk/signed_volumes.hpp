@@ -7,16 +7,17 @@
 /// cofactors that lose all their digits on nearly flat or nearly degenerate simplices, and its
 /// "backup procedure" is then the only thing between GJK and a wrong or looping answer. Signed
 /// volumes decide with the signs of the barycentric volumes of the simplex itself (which are
-/// well conditioned), project the origin onto the affine hull directly (so the distance to a
-/// face keeps its relative accuracy even when the barycentrics do not), and recurse only into the
-/// faces that the origin lies outside of.
+/// well conditioned) and recurse only into the faces that the origin lies outside of.
 ///
-/// Departures from the paper: the recursion does not assume GJK's vertex ordering (any simplex,
+/// Departures from the paper: the projection onto a triangle's plane is returned only when it
+/// agrees to rounding with the convex combination of the vertices (on a sliver triangle it can
+/// undershoot the distance, and GJK then stops early); the recursion does not assume GJK's vertex ordering (any simplex,
 /// including ones rebuilt from a warm-start cache, is handled); near-flat triangles and
 /// tetrahedra (relative size below kFlatness) are treated as their boundary; barycentrics are
 /// normalised by the sum of the computed sub-volumes so they always lie in [0, 1] and sum to 1.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -110,12 +111,24 @@ SubSimplex<S> closest_on_triangle(const Vec3T<S>* w, int i, int j, int k) {
   if (in_i && in_j && in_k) {
     const S sum = ci + cj + ck;
     if (sum != S(0)) {
-      best.v = p;
       best.weights[i] = ci / sum;
       best.weights[j] = cj / sum;
       best.weights[k] = ck / sum;
+      // Two candidates for the closest point: the projection p onto the plane, whose direction is
+      // the plane's normal (the best normal when the shapes nearly touch and the point is tiny),
+      // and the convex combination q, which is a point of A - B by construction. On a sliver
+      // triangle the plane can be off by far more than rounding, and p may then lie nearer the
+      // origin than any point of A - B; GJK needs |v| to stay an upper bound on the distance or
+      // it stops early, too small. So take p only where it agrees with q to rounding.
+      const Vec3T<S> q = best.weights[i] * w[i] + best.weights[j] * w[j] + best.weights[k] * w[k];
+      const S scale = std::max({std::abs(w[i].maxCoeff()), std::abs(w[i].minCoeff()),
+                                std::abs(w[j].maxCoeff()), std::abs(w[j].minCoeff()),
+                                std::abs(w[k].maxCoeff()), std::abs(w[k].minCoeff())});
+      const bool p_agrees = std::abs(q.norm() - p.norm()) <=
+                            S(16) * std::numeric_limits<S>::epsilon() * scale;
+      best.v = p_agrees ? p : q;
       best.mask = (1u << i) | (1u << j) | (1u << k);
-      best.dist_sq = p.squaredNorm();
+      best.dist_sq = best.v.squaredNorm();
       return best;
     }
   }
@@ -135,9 +148,15 @@ template <class S>
 SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
   const Vec3T<S> e1 = w[1] - w[0], e2 = w[2] - w[0], e3 = w[3] - w[0];
   const S det = e1.dot(e2.cross(e3));
-  // Barycentric volumes: c[i] is the volume with w[i] replaced by the origin.
-  const S c[4] = {w[1].dot(w[2].cross(w[3])), -w[0].dot(w[2].cross(w[3])),
-                  w[0].dot(w[1].cross(w[3])), -w[0].dot(w[1].cross(w[2]))};
+  // Barycentric volumes: c[i] is the volume with w[i] replaced by the origin. Each is written as
+  // a vertex dotted with a cross product of *edges*, never as a triple product of the raw
+  // points: near convergence on a curved surface the points crowd within 1e-5 of each other
+  // some distance from the origin, their tetrahedron's volume is ~1e-15, and w1.(w2 x w3) would
+  // carry an absolute error (eps |w|^3) larger than that. The edge form keeps the error relative
+  // to the (small) face areas, so the signs that pick the faces stay right.
+  const Vec3T<S> f2 = w[2] - w[1], f3 = w[3] - w[1];
+  const S c[4] = {w[1].dot(f2.cross(f3)), -w[0].dot(e2.cross(e3)), -w[0].dot(e3.cross(e1)),
+                  -w[0].dot(e1.cross(e2))};
   static constexpr int kFace[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
   SubSimplex<S> best;
   const bool flat =
