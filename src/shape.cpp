@@ -46,7 +46,9 @@ Expected<Shape> Shape::sphere(double radius) {
   return from_core(Point{}, radius);
 }
 
-Expected<Shape> Shape::box(const Vec3& half_extents) { return from_core(Box{half_extents}, 0); }
+Expected<Shape> Shape::box(const Vec3& half_extents) {
+  return from_core(Box{half_extents}, 0);
+}
 
 Expected<Shape> Shape::capsule(double radius, double half_height) {
   const Capsule c{radius, half_height};
@@ -62,11 +64,17 @@ Expected<Shape> Shape::cone(double radius, double half_height) {
   return from_core(Cone{radius, half_height}, 0);
 }
 
-Expected<Shape> Shape::ellipsoid(const Vec3& radii) { return from_core(Ellipsoid{radii}, 0); }
+Expected<Shape> Shape::ellipsoid(const Vec3& radii) {
+  return from_core(Ellipsoid{radii}, 0);
+}
 
-Expected<Shape> Shape::point(const Vec3& p) { return from_core(Point{p}, 0); }
+Expected<Shape> Shape::point(const Vec3& p) {
+  return from_core(Point{p}, 0);
+}
 
-Expected<Shape> Shape::segment(const Vec3& a, const Vec3& b) { return from_core(Segment{a, b}, 0); }
+Expected<Shape> Shape::segment(const Vec3& a, const Vec3& b) {
+  return from_core(Segment{a, b}, 0);
+}
 
 Expected<Shape> Shape::triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
   return from_core(Triangle{a, b, c}, 0);
@@ -79,7 +87,8 @@ Expected<Shape> Shape::polytope(std::span<const Vec3> points) {
 }
 
 Expected<Shape> Shape::sum(const Shape& a, const Shape& b) {
-  if (a.cores_.empty() || b.cores_.empty()) return Expected<Shape>::failure("sum of an empty shape");
+  if (a.cores_.empty() || b.cores_.empty())
+    return Expected<Shape>::failure("sum of an empty shape");
   Shape s = a;
   s.cores_.insert(s.cores_.end(), b.cores_.begin(), b.cores_.end());
   s.radius_ = a.radius_ + b.radius_;

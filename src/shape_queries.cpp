@@ -51,7 +51,7 @@ IntersectResult intersect(const Shape& a, const Pose& pose_a, const Shape& b, co
   }
   return dispatch(a, b, [&](const auto& ca, const auto& cb) {
     return intersect<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, pose_a, cb, pose_b,
-                                                                           tolerances, cache);
+                                                                             tolerances, cache);
   });
 }
 
@@ -64,7 +64,7 @@ DistanceResult distance(const Shape& a, const Pose& pose_a, const Shape& b, cons
   }
   return dispatch(a, b, [&](const auto& ca, const auto& cb) {
     return distance<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, pose_a, cb, pose_b,
-                                                                          tolerances, cache);
+                                                                            tolerances, cache);
   });
 }
 

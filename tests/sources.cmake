@@ -1,4 +1,5 @@
 set(MINK_TEST_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/unit/shapes/support_scan_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/oracle/oracle_self_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/smoke_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/analytic_test.cpp
@@ -6,5 +7,6 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/nasty_cases_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/bad_input_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/float_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/warm_start_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/property/gjk_property_test.cpp
 )

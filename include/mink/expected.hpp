@@ -12,7 +12,8 @@ namespace mink {
 template <class T>
 class Expected {
  public:
-  Expected(T value) : value_(std::move(value)) {}  // NOLINT: implicit on purpose, like std::expected
+  Expected(T value)
+      : value_(std::move(value)) {}  // NOLINT: implicit on purpose, like std::expected
   static Expected failure(std::string reason) {
     Expected e;
     e.error_ = std::move(reason);

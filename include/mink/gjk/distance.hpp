@@ -39,8 +39,8 @@ struct DistanceResultT {
   Vec3T<S> normal = Vec3T<S>::Zero();   ///< unit, world frame, from point_a towards point_b
   Vec3T<S> point_a = Vec3T<S>::Zero();  ///< closest point on A (world frame)
   Vec3T<S> point_b = Vec3T<S>::Zero();  ///< closest point on B (world frame)
-  S error_bound = S(0);       ///< distance minus GJK's proven lower bound (unit: length), >= 0
-  int iterations = 0;         ///< support evaluations of the Minkowski difference
+  S error_bound = S(0);         ///< distance minus GJK's proven lower bound (unit: length), >= 0
+  int iterations = 0;           ///< support evaluations of the Minkowski difference
   const char* error = nullptr;  ///< reason for InvalidInput, else nullptr
 };
 
@@ -49,11 +49,11 @@ using DistanceResult = DistanceResultT<double>;
 /// Distance between a (at pose_a) and b (at pose_b), with closest points and the normal.
 /// `cache` (optional, in/out) warm-starts GJK from the previous query of the same pair.
 template <ConvexShape A, ConvexShape B>
-  requires std::same_as<typename A::Scalar, typename B::Scalar>
-DistanceResultT<typename A::Scalar> distance(const A& a, const PoseT<typename A::Scalar>& pose_a,
-                                             const B& b, const PoseT<typename A::Scalar>& pose_b,
-                                             const TolerancesT<typename A::Scalar>& tolerances = {},
-                                             GjkCacheT<typename A::Scalar>* cache = nullptr) {
+requires std::same_as<typename A::Scalar, typename B::Scalar> DistanceResultT<typename A::Scalar>
+distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+         const PoseT<typename A::Scalar>& pose_b,
+         const TolerancesT<typename A::Scalar>& tolerances = {},
+         GjkCacheT<typename A::Scalar>* cache = nullptr) {
   using S = typename A::Scalar;
   DistanceResultT<S> result;
   if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
@@ -86,8 +86,8 @@ DistanceResultT<typename A::Scalar> distance(const A& a, const PoseT<typename A:
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const S radius_a = a.core_radius(), radius_b = b.core_radius();
   const S size = a.bounding_radius() + b.bounding_radius();
-  const auto gjk =
-      detail::run_gjk<detail::GjkMode::Distance>(diff, radius_a + radius_b, size, tolerances, cache);
+  const auto gjk = detail::run_gjk<detail::GjkMode::Distance>(diff, radius_a + radius_b, size,
+                                                              tolerances, cache);
   result.status = gjk.status;
   result.iterations = gjk.iterations;
   if (gjk.status == Status::InvalidInput) {

@@ -55,7 +55,7 @@ enum class GjkMode {
 template <class S>
 struct GjkOutcome {
   Status status = Status::Separated;
-  SimplexT<S> simplex;  ///< final simplex with weights (distance mode only)
+  SimplexT<S> simplex;            ///< final simplex with weights (distance mode only)
   Vec3T<S> v = Vec3T<S>::Zero();  ///< closest point of A - B's core to the origin (A's frame)
   S upper = std::numeric_limits<S>::infinity();  ///< upper bound on the core distance
   S lower = S(0);                                ///< lower bound on the core distance
@@ -183,8 +183,10 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
         trial.size = 0;
         for (int k = 0; k <= simplex.size; ++k) {
           SimplexVertexT<S> mixed = k < simplex.size ? simplex.vertices[k] : vertex;
-          if (side == 0) mixed.a = vertex.a;
-          else mixed.b = vertex.b;
+          if (side == 0)
+            mixed.a = vertex.a;
+          else
+            mixed.b = vertex.b;
           mixed.w = mixed.a - mixed.b;
           bool repeated = false;
           for (int m = 0; m < trial.size; ++m) repeated |= trial.vertices[m].w == mixed.w;

@@ -22,9 +22,9 @@ struct IntersectResultT {
   /// `intersect` is the best guess: the upper bound on the distance was within touching range);
   /// InvalidInput when a shape or pose is invalid (then `intersect` is false and `error` says why).
   Status status = Status::InvalidInput;
-  bool intersect = false;         ///< the shapes share a point (touching within tolerance counts)
-  int iterations = 0;             ///< support evaluations of the Minkowski difference
-  const char* error = nullptr;    ///< reason for InvalidInput, else nullptr
+  bool intersect = false;       ///< the shapes share a point (touching within tolerance counts)
+  int iterations = 0;           ///< support evaluations of the Minkowski difference
+  const char* error = nullptr;  ///< reason for InvalidInput, else nullptr
 };
 
 using IntersectResult = IntersectResultT<double>;
@@ -32,12 +32,11 @@ using IntersectResult = IntersectResultT<double>;
 /// Do a (at pose_a) and b (at pose_b) intersect? `cache` (optional, in/out) warm-starts GJK from
 /// the previous query of the same pair.
 template <ConvexShape A, ConvexShape B>
-  requires std::same_as<typename A::Scalar, typename B::Scalar>
-IntersectResultT<typename A::Scalar> intersect(
-    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
-    const PoseT<typename A::Scalar>& pose_b,
-    const TolerancesT<typename A::Scalar>& tolerances = {},
-    GjkCacheT<typename A::Scalar>* cache = nullptr) {
+requires std::same_as<typename A::Scalar, typename B::Scalar> IntersectResultT<typename A::Scalar>
+intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+          const PoseT<typename A::Scalar>& pose_b,
+          const TolerancesT<typename A::Scalar>& tolerances = {},
+          GjkCacheT<typename A::Scalar>* cache = nullptr) {
   using S = typename A::Scalar;
   IntersectResultT<S> result;
   if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
@@ -68,9 +67,9 @@ IntersectResultT<typename A::Scalar> intersect(
     result.error = detail::kOverflowError;
     return result;
   }
-  result.intersect = gjk.status == Status::Intersecting ||
-                     (gjk.status == Status::IterationLimit &&
-                      gjk.upper <= radius + tolerances.relative * size);
+  result.intersect =
+      gjk.status == Status::Intersecting ||
+      (gjk.status == Status::IterationLimit && gjk.upper <= radius + tolerances.relative * size);
   return result;
 }
 

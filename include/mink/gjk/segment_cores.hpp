@@ -33,8 +33,8 @@ struct SegmentCore<SphereT<S>> : std::true_type {
 
 template <class S>
 struct SegmentCore<CapsuleT<S>> : std::true_type {
-  static void world(const CapsuleT<S>& c, const PoseT<S>& pose, const Vec3T<S>& origin,
-                    Vec3T<S>& p, Vec3T<S>& q) {
+  static void world(const CapsuleT<S>& c, const PoseT<S>& pose, const Vec3T<S>& origin, Vec3T<S>& p,
+                    Vec3T<S>& q) {
     // The core is (0, 0, +-h): the rotation's z column scaled, no matrix product needed.
     const Vec3T<S> centre = pose.translation - origin;
     const Vec3T<S> half = pose.rotation.col(2) * c.half_height;
@@ -53,8 +53,8 @@ struct SegmentCore<PointT<S>> : std::true_type {
 
 template <class S>
 struct SegmentCore<SegmentT<S>> : std::true_type {
-  static void world(const SegmentT<S>& s, const PoseT<S>& pose, const Vec3T<S>& origin,
-                    Vec3T<S>& p, Vec3T<S>& q) {
+  static void world(const SegmentT<S>& s, const PoseT<S>& pose, const Vec3T<S>& origin, Vec3T<S>& p,
+                    Vec3T<S>& q) {
     const Vec3T<S> shift = pose.translation - origin;
     p = pose.rotation * s.a + shift;
     q = pose.rotation * s.b + shift;
@@ -71,7 +71,7 @@ struct SegmentCore<Rounded<T>> : std::bool_constant<SegmentCore<T>::value> {
 };
 
 template <class A, class B>
-inline constexpr bool kSegmentCores = SegmentCore<A>::value && SegmentCore<B>::value;
+inline constexpr bool kSegmentCores = SegmentCore<A>::value&& SegmentCore<B>::value;
 
 /// Closest point to x of the segment p + s d, s in [0, 1], as its parameter s.
 template <class S>
@@ -98,7 +98,8 @@ void closest_points_of_segments(const Vec3T<S>& p0, const Vec3T<S>& p1, const Ve
   const Vec3T<S> n = d1.cross(d2);
   const S nn = n.squaredNorm();
   if (nn > S(0)) {
-    // Lines p0 + s d1 and q0 + t d2: s = ((q0 - p0) x d2).n / |n|^2, t = ((q0 - p0) x d1).n / |n|^2.
+    // Lines p0 + s d1 and q0 + t d2: s = ((q0 - p0) x d2).n / |n|^2, t = ((q0 - p0) x d1).n /
+    // |n|^2.
     const S s = r.cross(d2).dot(n) / nn;
     const S t = r.cross(d1).dot(n) / nn;
     if (s >= S(0) && s <= S(1) && t >= S(0) && t <= S(1)) {

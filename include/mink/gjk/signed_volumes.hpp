@@ -11,10 +11,11 @@
 ///
 /// Departures from the paper: the projection onto a triangle's plane is returned only when it
 /// agrees to rounding with the convex combination of the vertices (on a sliver triangle it can
-/// undershoot the distance, and GJK then stops early); the recursion does not assume GJK's vertex ordering (any simplex,
-/// including ones rebuilt from a warm-start cache, is handled); near-flat triangles and
-/// tetrahedra (relative size below kFlatness) are treated as their boundary; barycentrics are
-/// normalised by the sum of the computed sub-volumes so they always lie in [0, 1] and sum to 1.
+/// undershoot the distance, and GJK then stops early); the recursion does not assume GJK's
+/// vertex ordering (any simplex, including one rebuilt from a warm-start cache, is handled);
+/// near-flat triangles and tetrahedra (relative size below kFlatness) are treated as their
+/// boundary; barycentrics are normalised by the sum of the computed sub-volumes so they always
+/// lie in [0, 1] and sum to 1.
 #pragma once
 
 #include <algorithm>
@@ -38,7 +39,8 @@ struct SubSimplex {
 /// its edges) is below this is treated as flat: its barycentrics would be noise. (1e4 eps)^2, so
 /// about 5e-24 in double.
 template <class S>
-constexpr S kFlatness = S(1e8) * std::numeric_limits<S>::epsilon() * std::numeric_limits<S>::epsilon();
+constexpr S kFlatness =
+    S(1e8) * std::numeric_limits<S>::epsilon() * std::numeric_limits<S>::epsilon();
 
 template <class S>
 SubSimplex<S> closest_on_vertex(const Vec3T<S>* w, int i) {
@@ -124,8 +126,8 @@ SubSimplex<S> closest_on_triangle(const Vec3T<S>* w, int i, int j, int k) {
       const S scale = std::max({std::abs(w[i].maxCoeff()), std::abs(w[i].minCoeff()),
                                 std::abs(w[j].maxCoeff()), std::abs(w[j].minCoeff()),
                                 std::abs(w[k].maxCoeff()), std::abs(w[k].minCoeff())});
-      const bool p_agrees = std::abs(q.norm() - p.norm()) <=
-                            S(16) * std::numeric_limits<S>::epsilon() * scale;
+      const bool p_agrees =
+          std::abs(q.norm() - p.norm()) <= S(16) * std::numeric_limits<S>::epsilon() * scale;
       best.v = p_agrees ? p : q;
       best.mask = (1u << i) | (1u << j) | (1u << k);
       best.dist_sq = best.v.squaredNorm();
@@ -190,10 +192,18 @@ Vec3T<S> reduce_to_closest(const SimplexT<S>& in, SimplexT<S>& out) {
   for (int i = 0; i < in.size; ++i) w[i] = in.vertices[i].w;
   SubSimplex<S> r;
   switch (in.size) {
-    case 1: r = closest_on_vertex(w, 0); break;
-    case 2: r = closest_on_segment(w, 0, 1); break;
-    case 3: r = closest_on_triangle(w, 0, 1, 2); break;
-    default: r = closest_on_tetrahedron(w); break;
+    case 1:
+      r = closest_on_vertex(w, 0);
+      break;
+    case 2:
+      r = closest_on_segment(w, 0, 1);
+      break;
+    case 3:
+      r = closest_on_triangle(w, 0, 1, 2);
+      break;
+    default:
+      r = closest_on_tetrahedron(w);
+      break;
   }
   // Keep the vertices with a positive weight, in order (kept <= i, so in-place is safe).
   int kept = 0;

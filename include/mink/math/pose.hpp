@@ -1,5 +1,6 @@
 /// @file pose.hpp
-/// Rigid motion from a shape's local frame to the world frame: world = rotation * local + translation.
+/// Rigid motion from a shape's local frame to the world frame: world = rotation * local +
+/// translation.
 #pragma once
 
 #include <cmath>
@@ -12,8 +13,8 @@ namespace mink {
 /// points per call (9 multiply-adds each, against about 15 for a quaternion).
 template <class S>
 struct PoseT {
-  Mat3T<S> rotation = Mat3T<S>::Identity();     ///< orthonormal, determinant +1
-  Vec3T<S> translation = Vec3T<S>::Zero();      ///< (unit: length)
+  Mat3T<S> rotation = Mat3T<S>::Identity();  ///< orthonormal, determinant +1
+  Vec3T<S> translation = Vec3T<S>::Zero();   ///< (unit: length)
 
   static PoseT identity() { return {}; }
 

@@ -17,10 +17,14 @@ enum class Status {
 /// Lower-case name of a status as the JSON protocol writes it ("separated", ...).
 constexpr const char* to_string(Status status) {
   switch (status) {
-    case Status::Separated: return "separated";
-    case Status::Intersecting: return "intersecting";
-    case Status::IterationLimit: return "iteration_limit";
-    case Status::InvalidInput: return "invalid_input";
+    case Status::Separated:
+      return "separated";
+    case Status::Intersecting:
+      return "intersecting";
+    case Status::IterationLimit:
+      return "iteration_limit";
+    case Status::InvalidInput:
+      return "invalid_input";
   }
   return "unknown";
 }

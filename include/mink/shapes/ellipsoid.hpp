@@ -15,10 +15,12 @@ struct EllipsoidT {
   Vec3T<S> radii = Vec3T<S>::Zero();  ///< semi-axes (unit: length), each finite and >= 0
 
   Vec3T<S> support_core(const Vec3T<S>& d) const {
-    // The ellipsoid is the image of the unit ball under D = diag(radii): support(d) = D^2 d / |D d|.
+    // The ellipsoid is the image of the unit ball under D = diag(radii): support(d) = D^2 d / |D
+    // d|.
     const Vec3T<S> dd = radii.cwiseProduct(d);
     const S len = dd.norm();
-    // |D d| = 0 only when d is orthogonal to every non-zero axis: the centre is then a support point.
+    // |D d| = 0 only when d is orthogonal to every non-zero axis: the centre is then a support
+    // point.
     if (!(len > S(0))) return Vec3T<S>::Zero();
     return radii.cwiseProduct(dd) / len;
   }

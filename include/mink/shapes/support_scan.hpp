@@ -5,8 +5,8 @@
 /// This is the one hand-vectorised loop of mink. Compilers do not vectorise an arg-max (the index
 /// has to follow the maximum), so the double version takes the maximum of blocks of points with
 /// SIMD and finds the index only in the winning block: SSE2 on any x86-64, AVX2 where the build
-/// enables it (-mavx2 or -march=native; the MINK_NATIVE CMake option). `support_index_scalar` is the plain
-/// twin that defines the result and that the tests compare the SIMD paths against.
+/// enables it (-mavx2 or -march=native; the MINK_NATIVE CMake option). The plain twin
+/// `support_index_scalar` defines the result, and the tests compare the SIMD paths against it.
 ///
 /// Result: the lowest index among the points farthest along d. With a NaN direction, 0.
 #pragma once
@@ -46,26 +46,52 @@ std::size_t support_index(const S* xs, const S* ys, const S* zs, std::size_t n, 
 #if defined(__AVX2__)
 using LaneVec = __m256d;
 constexpr int kLaneWidth = 4;
-inline LaneVec lane_set1(double x) { return _mm256_set1_pd(x); }
-inline LaneVec lane_load(const double* p) { return _mm256_loadu_pd(p); }
-inline LaneVec lane_add(LaneVec a, LaneVec b) { return _mm256_add_pd(a, b); }
-inline LaneVec lane_mul(LaneVec a, LaneVec b) { return _mm256_mul_pd(a, b); }
-inline LaneVec lane_max(LaneVec a, LaneVec b) { return _mm256_max_pd(a, b); }
+inline LaneVec lane_set1(double x) {
+  return _mm256_set1_pd(x);
+}
+inline LaneVec lane_load(const double* p) {
+  return _mm256_loadu_pd(p);
+}
+inline LaneVec lane_add(LaneVec a, LaneVec b) {
+  return _mm256_add_pd(a, b);
+}
+inline LaneVec lane_mul(LaneVec a, LaneVec b) {
+  return _mm256_mul_pd(a, b);
+}
+inline LaneVec lane_max(LaneVec a, LaneVec b) {
+  return _mm256_max_pd(a, b);
+}
 inline double lane_hmax(LaneVec v) {
   const __m128d m = _mm_max_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
   return _mm_cvtsd_f64(_mm_max_sd(m, _mm_unpackhi_pd(m, m)));
 }
-inline void lane_store(double* p, LaneVec v) { _mm256_storeu_pd(p, v); }
+inline void lane_store(double* p, LaneVec v) {
+  _mm256_storeu_pd(p, v);
+}
 #else
 using LaneVec = __m128d;
 constexpr int kLaneWidth = 2;
-inline LaneVec lane_set1(double x) { return _mm_set1_pd(x); }
-inline LaneVec lane_load(const double* p) { return _mm_loadu_pd(p); }
-inline LaneVec lane_add(LaneVec a, LaneVec b) { return _mm_add_pd(a, b); }
-inline LaneVec lane_mul(LaneVec a, LaneVec b) { return _mm_mul_pd(a, b); }
-inline LaneVec lane_max(LaneVec a, LaneVec b) { return _mm_max_pd(a, b); }
-inline double lane_hmax(LaneVec v) { return _mm_cvtsd_f64(_mm_max_sd(v, _mm_unpackhi_pd(v, v))); }
-inline void lane_store(double* p, LaneVec v) { _mm_storeu_pd(p, v); }
+inline LaneVec lane_set1(double x) {
+  return _mm_set1_pd(x);
+}
+inline LaneVec lane_load(const double* p) {
+  return _mm_loadu_pd(p);
+}
+inline LaneVec lane_add(LaneVec a, LaneVec b) {
+  return _mm_add_pd(a, b);
+}
+inline LaneVec lane_mul(LaneVec a, LaneVec b) {
+  return _mm_mul_pd(a, b);
+}
+inline LaneVec lane_max(LaneVec a, LaneVec b) {
+  return _mm_max_pd(a, b);
+}
+inline double lane_hmax(LaneVec v) {
+  return _mm_cvtsd_f64(_mm_max_sd(v, _mm_unpackhi_pd(v, v)));
+}
+inline void lane_store(double* p, LaneVec v) {
+  _mm_storeu_pd(p, v);
+}
 #endif
 
 template <>

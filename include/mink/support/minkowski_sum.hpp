@@ -9,7 +9,7 @@ namespace mink {
 /// of a sum is the sum of the supports, and its core is the sum of the cores with the radii added,
 /// so segment + sphere is exactly a capsule.
 template <ConvexShape A, ConvexShape B>
-  requires std::same_as<typename A::Scalar, typename B::Scalar>
+requires std::same_as<typename A::Scalar, typename B::Scalar>
 struct MinkowskiSum {
   using Scalar = typename A::Scalar;
   A a;
