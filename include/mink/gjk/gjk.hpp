@@ -39,7 +39,9 @@ struct CoreDifference {
   Mat3T<S> rotation;     ///< B's rotation relative to A
   Vec3T<S> translation;  ///< B's origin in A's frame
 
-  void support(const Vec3T<S>& d, SimplexVertexT<S>& out) const {
+  // Always inlined: it is the body of every GJK iteration, and the compiler's cost model
+  // otherwise leaves it out of line for the larger shapes.
+  [[gnu::always_inline]] inline void support(const Vec3T<S>& d, SimplexVertexT<S>& out) const {
     out.a = a.support_core(d);
     out.b = rotation * b.support_core(rotation.transpose() * (-d)) + translation;
     out.w = out.a - out.b;
@@ -87,9 +89,12 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
 
   Vec3T<S> v;
   bool v_in_set = false;  // v is a point of A - B (so |v| bounds the distance from above)
-  if (cache && cache->size > 0) {
+  // A cache is only a hint: one with a non-finite direction or a bad size is ignored.
+  bool use_cache = cache && cache->size > 0 && cache->size <= 4;
+  for (int i = 0; use_cache && i < cache->size; ++i) use_cache = is_finite(cache->directions[i]);
+  if (use_cache) {
     // Rebuild the previous simplex from its directions: fresh support points of the current poses.
-    for (int i = 0; i < std::min(cache->size, 4); ++i) {
+    for (int i = 0; i < cache->size; ++i) {
       SimplexVertexT<S> vertex;
       diff.support(cache->directions[i], vertex);
       ++out.iterations;

@@ -123,11 +123,13 @@ SubSimplex<S> closest_on_triangle(const Vec3T<S>* w, int i, int j, int k) {
       // origin than any point of A - B; GJK needs |v| to stay an upper bound on the distance or
       // it stops early, too small. So take p only where it agrees with q to rounding.
       const Vec3T<S> q = best.weights[i] * w[i] + best.weights[j] * w[j] + best.weights[k] * w[k];
-      const S scale = std::max({std::abs(w[i].maxCoeff()), std::abs(w[i].minCoeff()),
-                                std::abs(w[j].maxCoeff()), std::abs(w[j].minCoeff()),
-                                std::abs(w[k].maxCoeff()), std::abs(w[k].minCoeff())});
-      const bool p_agrees =
-          std::abs(q.norm() - p.norm()) <= S(16) * std::numeric_limits<S>::epsilon() * scale;
+      const S scale = std::max({w[i].cwiseAbs().maxCoeff(), w[j].cwiseAbs().maxCoeff(),
+                                w[k].cwiseAbs().maxCoeff()});
+      // ||q| - |p|| <= 16 eps scale, squared and multiplied through by (|q| + |p|)^2 ~ 4 max:
+      // no square root on this hot path.
+      const S qq = q.squaredNorm(), pp = p.squaredNorm(), diff = qq - pp;
+      const S bound = S(32) * std::numeric_limits<S>::epsilon() * scale;
+      const bool p_agrees = diff * diff <= bound * bound * std::max(qq, pp);
       best.v = p_agrees ? p : q;
       best.mask = (1u << i) | (1u << j) | (1u << k);
       best.dist_sq = best.v.squaredNorm();

@@ -3,6 +3,7 @@
 // when the cache is stale or belongs to another pair.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "mink/mink.hpp"
@@ -81,6 +82,21 @@ TEST(GjkWarmStart, StaleOrForeignCacheIsOnlyAHint) {
     const auto warm_bool = mink::intersect(box, pose_a, mink::Rounded{capsule, 0.0}, pose_b,
                                            mink::Tolerances{}, &cache);
     EXPECT_EQ(warm_bool.intersect, cold.intersect);
+  }
+}
+
+TEST(GjkWarmStart, GarbageCacheIsIgnored) {
+  const mink::Box box{Vec3(1, 1, 1)};
+  const Pose apart = Pose::from_translation(Vec3(3, 0, 0));
+  for (int size : {-3, 0, 2, 5, 1000}) {
+    mink::GjkCache cache;
+    cache.size = size;
+    for (auto& d : cache.directions) d = Vec3(std::nan(""), 1, 0);
+    const auto r = mink::distance(box, Pose::identity(), box, apart, mink::Tolerances{}, &cache);
+    ASSERT_EQ(r.status, mink::Status::Separated) << "cache size " << size;
+    EXPECT_NEAR(r.distance, 1.0, 1e-15);
+    EXPECT_GE(cache.size, 1);  // the cache now holds this query's simplex
+    EXPECT_LE(cache.size, 4);
   }
 }
 
