@@ -79,7 +79,7 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
   // back to the previous simplex (no progress) costs nothing.
   SimplexT<S> buffers[2];
   int current = 0;
-  constexpr int kMaxRestarts = 2;
+  constexpr int kMaxRestarts = 8;
   int restarts = 0;
   SimplexT<S> saved;  // best simplex before a restart (distance mode only)
   Vec3T<S> saved_v = Vec3T<S>::Zero();
