@@ -223,6 +223,26 @@ constexpr int index_in(std::variant<Ts...>*) {
   return found;
 }
 
+/// One random case of the sweeps: two shapes of the given kinds, their poses (B within reach of
+/// A) and a rigid motion. The draws are sequenced one statement at a time so that a seed gives
+/// the same case whatever order a compiler evaluates function arguments in.
+struct Case {
+  zoo::Desc da, db;
+  Pose pa, pb, motion;
+};
+
+inline Case draw_case(oracle::Rng& rng, int ka, int kb) {
+  Case c;
+  c.da = zoo::random_desc(rng, ka, 1.0);
+  c.db = zoo::random_desc(rng, kb, 1.0);
+  c.pa = rng.pose(5);
+  const double reach = zoo::size_of(c.da) + zoo::size_of(c.db);
+  const Vec3 offset = rng.in_ball(1.2 * reach);
+  c.pb = Pose::from(c.pa.translation + offset, rng.rotation());
+  c.motion = rng.pose(20);
+  return c;
+}
+
 /// The static-type sweep restricted to pairs whose A kind lies in [kFirst, kLast]: every case keeps
 /// its seed, so the union of the ranges is the whole sweep.
 template <int kFirst, int kLast>
@@ -235,11 +255,10 @@ void run_static_sweep() {
     oracle::Rng rng(seed);
     const int ka = i % zoo::kKindCount, kb = (i / zoo::kKindCount) % zoo::kKindCount;
     if (ka < kFirst || ka > kLast) continue;
-    const zoo::Desc da = zoo::random_desc(rng, ka, 1.0), db = zoo::random_desc(rng, kb, 1.0);
-    const Pose pa = rng.pose(5);
-    const double reach = zoo::size_of(da) + zoo::size_of(db);
-    const Pose pb = Pose::from(pa.translation + rng.in_ball(1.2 * reach), rng.rotation());
-    const Pose motion = rng.pose(20);
+    // Named references, not a structured binding: clang 14 cannot capture bindings in lambdas.
+    const Case c = draw_case(rng, ka, kb);
+    const zoo::Desc &da = c.da, &db = c.db;
+    const Pose &pa = c.pa, &pb = c.pb, &motion = c.motion;
     SCOPED_TRACE(testing::Message() << oracle::seed_note(seed) << "\nA: " << da.describe()
                                     << "\nB: " << db.describe());
     const zoo::Static sa = zoo::make_static(da), sb = zoo::make_static(db);

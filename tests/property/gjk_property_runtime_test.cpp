@@ -12,11 +12,11 @@ TEST(GjkProperties, AllShapePairsRuntimeShape) {
     const std::uint64_t seed = base + i;
     oracle::Rng rng(seed);
     const int ka = i % zoo::kKindCount, kb = (i / zoo::kKindCount) % zoo::kKindCount;
-    const zoo::Desc da = zoo::random_desc(rng, ka, 1.0), db = zoo::random_desc(rng, kb, 1.0);
-    const Pose pa = rng.pose(5);
+    // Named references, not a structured binding: clang 14 cannot capture bindings in lambdas.
+    const Case c = draw_case(rng, ka, kb);
+    const zoo::Desc &da = c.da, &db = c.db;
+    const Pose &pa = c.pa, &pb = c.pb, &motion = c.motion;
     const double reach = zoo::size_of(da) + zoo::size_of(db);
-    const Pose pb = Pose::from(pa.translation + rng.in_ball(1.2 * reach), rng.rotation());
-    const Pose motion = rng.pose(20);
     SCOPED_TRACE(testing::Message() << oracle::seed_note(seed) << "\nA: " << da.describe()
                                     << "\nB: " << db.describe());
     const mink::Shape a = zoo::make_runtime(da), b = zoo::make_runtime(db);
