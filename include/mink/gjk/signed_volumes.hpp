@@ -123,8 +123,8 @@ SubSimplex<S> closest_on_triangle(const Vec3T<S>* w, int i, int j, int k) {
       // origin than any point of A - B; GJK needs |v| to stay an upper bound on the distance or
       // it stops early, too small. So take p only where it agrees with q to rounding.
       const Vec3T<S> q = best.weights[i] * w[i] + best.weights[j] * w[j] + best.weights[k] * w[k];
-      const S scale = std::max({w[i].cwiseAbs().maxCoeff(), w[j].cwiseAbs().maxCoeff(),
-                                w[k].cwiseAbs().maxCoeff()});
+      const S scale = std::max(
+          {w[i].cwiseAbs().maxCoeff(), w[j].cwiseAbs().maxCoeff(), w[k].cwiseAbs().maxCoeff()});
       // ||q| - |p|| <= 16 eps scale, squared and multiplied through by (|q| + |p|)^2 ~ 4 max:
       // no square root on this hot path.
       const S qq = q.squaredNorm(), pp = p.squaredNorm(), diff = qq - pp;
