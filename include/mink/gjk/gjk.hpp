@@ -11,7 +11,7 @@
 ///   - the loop stops when the bounds meet within the tolerance, when w brings nothing new
 ///     (already in the simplex, or |v| stops decreasing: the rounding floor), when the simplex
 ///     encloses the origin, or at the iteration cap;
-///   - in boolean mode it also stops as soon as a bound decides the question.
+///   - run_gjk_boolean() also stops as soon as a bound decides "do they intersect?".
 #pragma once
 
 #include <algorithm>
@@ -47,32 +47,33 @@ struct CoreDifference {
     out.w = out.a - out.b;
     out.dir = d;
   }
-};
 
-enum class GjkMode {
-  Boolean,   ///< stop as soon as the answer to "do the shapes intersect?" is known
-  Distance,  ///< converge the distance; stop early only when the shapes are proven intersecting
+  /// The point of A - B alone, for the boolean test, which needs no witness points.
+  [[gnu::always_inline]] inline Vec3T<S> support_point(const Vec3T<S>& d) const {
+    return a.support_core(d) -
+           (rotation * b.support_core(rotation.transpose() * (-d)) + translation);
+  }
 };
 
 template <class S>
 struct GjkOutcome {
   Status status = Status::Separated;
-  SimplexT<S> simplex;            ///< final simplex with weights (distance mode only)
+  SimplexT<S> simplex;            ///< final simplex with weights
   Vec3T<S> v = Vec3T<S>::Zero();  ///< closest point of A - B's core to the origin (A's frame)
   S upper = std::numeric_limits<S>::infinity();  ///< upper bound on the core distance
   S lower = S(0);                                ///< lower bound on the core distance
   int iterations = 0;
 };
 
-/// Runs GJK between the cores of a and b; `radius` is the sum of the shapes' radii and `size`
-/// the sum of their bounding radii. Status is Separated or Intersecting for the *full* shapes
-/// (cores within `radius`, touching within tolerance counts), IterationLimit, or InvalidInput
-/// when the arithmetic overflowed (kOverflowError).
-template <GjkMode kMode, ConvexShape A, ConvexShape B>
-GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typename A::Scalar radius,
-                                       typename A::Scalar size,
-                                       const TolerancesT<typename A::Scalar>& tol,
-                                       GjkCacheT<typename A::Scalar>* cache) {
+/// Runs GJK between the cores of a and b until the distance converges; `radius` is the sum of the
+/// shapes' radii and `size` the sum of their bounding radii. Status is Separated or Intersecting
+/// for the *full* shapes (cores within `radius`, touching within tolerance counts),
+/// IterationLimit, or InvalidInput when the arithmetic overflowed (kOverflowError).
+template <ConvexShape A, ConvexShape B>
+GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff,
+                                                typename A::Scalar radius, typename A::Scalar size,
+                                                const TolerancesT<typename A::Scalar>& tol,
+                                                GjkCacheT<typename A::Scalar>* cache) {
   using S = typename A::Scalar;
   GjkOutcome<S> out;
   // Two buffers: the sub-algorithm writes the reduced simplex into the other one, so that going
@@ -81,7 +82,7 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
   int current = 0;
   constexpr int kMaxRestarts = 8;
   int restarts = 0;
-  SimplexT<S> saved;  // best simplex before a restart (distance mode only)
+  SimplexT<S> saved;  // best simplex before a restart
   Vec3T<S> saved_v = Vec3T<S>::Zero();
   S saved_sq = std::numeric_limits<S>::infinity();
   const S touch = tol.relative * size;  // core distances up to this count as touching
@@ -119,10 +120,6 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
       out.status = Status::Intersecting;
       break;
     }
-    if (v_in_set && kMode == GjkMode::Boolean && radius > S(0) && v_sq <= inside * inside) {
-      out.status = Status::Intersecting;
-      break;
-    }
     if (v_in_set && out.iterations >= tol.max_iterations) {
       out.status = Status::IterationLimit;
       break;
@@ -131,16 +128,7 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
     diff.support(-v, vertex);
     ++out.iterations;
     const S vw = v.dot(vertex.w);
-    if constexpr (kMode == GjkMode::Boolean) {
-      // A separating plane with room for the radii decides: the lower bound v.w / |v| exceeds
-      // `inside`, squared so the common one-iteration exit needs no square root.
-      if (vw > S(0) && vw * vw > inside * inside * v_sq) {
-        out.status = Status::Separated;
-        break;
-      }
-    } else {
-      out.lower = std::max(out.lower, vw / std::sqrt(v_sq));
-    }
+    out.lower = std::max(out.lower, vw / std::sqrt(v_sq));
     if (v_in_set) {
       // Bounds met: |v| - v.w/|v| <= tol * size, i.e. gap = |v|^2 - v.w <= tol * size * |v|.
       // Relative to the shapes' size, not to the distance: far apart shapes still get their
@@ -207,20 +195,18 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
         if (best_sq < v_sq) break;
       }
       if (!(best_sq < v_sq)) {
-        if constexpr (kMode == GjkMode::Distance) {
-          // Still stuck with the bounds apart: restart from a fresh simplex along v, which sheds
-          // the crowded points; keep the best answer seen in case the restart does no better.
-          if (restarts < kMaxRestarts && v_sq - vw > tol.relative * size * std::sqrt(v_sq)) {
-            ++restarts;
-            if (v_sq < saved_sq) {
-              saved = simplex;
-              saved_v = v;
-              saved_sq = v_sq;
-            }
-            simplex.size = 0;
-            v_in_set = false;
-            continue;
+        // Still stuck with the bounds apart: restart from a fresh simplex along v, which sheds
+        // the crowded points; keep the best answer seen in case the restart does no better.
+        if (restarts < kMaxRestarts && v_sq - vw > tol.relative * size * std::sqrt(v_sq)) {
+          ++restarts;
+          if (v_sq < saved_sq) {
+            saved = simplex;
+            saved_v = v;
+            saved_sq = v_sq;
           }
+          simplex.size = 0;
+          v_in_set = false;
+          continue;
         }
         out.status = Status::Separated;
         break;
@@ -239,12 +225,12 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
     v_in_set = true;
   }
   const SimplexT<S>& simplex = buffers[current];
-  if constexpr (kMode == GjkMode::Distance) out.simplex = simplex;
+  out.simplex = simplex;
   out.v = v_in_set ? v : Vec3T<S>::Zero();
   if (v_in_set) out.upper = v.norm();
   if (!(out.upper <= std::numeric_limits<S>::max()) && v_in_set) out.status = Status::InvalidInput;
   if (out.status == Status::Separated && out.upper <= inside) out.status = Status::Intersecting;
-  if (out.status == Status::Intersecting && kMode == GjkMode::Distance) out.lower = S(0);
+  if (out.status == Status::Intersecting) out.lower = S(0);
   if (cache) {
     cache->size = simplex.size;
     for (int i = 0; i < simplex.size; ++i) cache->directions[i] = simplex.vertices[i].dir;
@@ -252,6 +238,149 @@ GjkOutcome<typename A::Scalar> run_gjk(const CoreDifference<A, B>& diff, typenam
       cache->size = 1;
       cache->directions[0] = -v;
     }
+  }
+  return out;
+}
+
+template <class S>
+struct GjkBooleanOutcome {
+  Status status = Status::Separated;
+  S upper = std::numeric_limits<S>::infinity();  ///< upper bound on the core distance
+  int iterations = 0;
+};
+
+/// GJK as a yes/no test: do the full shapes intersect (cores within `radius`, touching within
+/// tolerance counts)? Same iteration as run_gjk_distance(), but it stops as soon as a bound
+/// decides, and its simplex holds only the points of A - B and their directions: no witness points
+/// or weights to carry, which is most of the cost of an iteration on cheap shapes. In the rare
+/// case where the loop stalls with the bounds on both sides of `radius` (curved shapes, see the
+/// recombination in run_gjk_distance()), it hands the question to run_gjk_distance(), which has
+/// the witness points to get unstuck.
+template <ConvexShape A, ConvexShape B>
+GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>& diff,
+                                                      typename A::Scalar radius,
+                                                      typename A::Scalar size,
+                                                      const TolerancesT<typename A::Scalar>& tol,
+                                                      GjkCacheT<typename A::Scalar>* cache) {
+  using S = typename A::Scalar;
+  GjkBooleanOutcome<S> out;
+  Vec3T<S> points[4], directions[4];
+  int count = 0;
+  const S touch = tol.relative * size;
+  const S inside = radius + touch;
+  const S inside_sq = inside * inside;
+
+  // The closest point of points[0..n) to the origin; keeps only the sub-simplex that holds it.
+  auto reduce = [&points, &directions, &count](const SubSimplex<S>& r, int n) {
+    int kept = 0;
+    for (int i = 0; i < n; ++i) {
+      if ((r.mask >> i & 1u) && r.weights[i] > S(0)) {
+        points[kept] = points[i];
+        directions[kept] = directions[i];
+        ++kept;
+      }
+    }
+    if (kept == 0) {  // every weight rounded to zero: keep the closest point
+      int best = 0;
+      for (int i = 1; i < n; ++i)
+        if (points[i].squaredNorm() < points[best].squaredNorm()) best = i;
+      points[0] = points[best];
+      directions[0] = directions[best];
+      count = 1;
+      return points[0];
+    }
+    count = kept;
+    return r.v;
+  };
+
+  Vec3T<S> v;
+  bool v_in_set = false;  // v is a point of A - B (so |v| bounds the distance from above)
+  bool use_cache = cache && cache->size > 0 && cache->size <= 4;
+  for (int i = 0; use_cache && i < cache->size; ++i) use_cache = is_finite(cache->directions[i]);
+  if (use_cache) {
+    for (int i = 0; i < cache->size; ++i) {
+      const Vec3T<S> w = diff.support_point(cache->directions[i]);
+      ++out.iterations;
+      bool duplicate = false;
+      for (int k = 0; k < count; ++k) duplicate |= points[k] == w;
+      if (duplicate) continue;
+      points[count] = w;
+      directions[count] = cache->directions[i];
+      ++count;
+    }
+    v = reduce(closest_of_simplex(points, count), count);
+    v_in_set = true;
+  } else {
+    v = -diff.translation;  // along the line of centres
+    if (!(v.squaredNorm() > S(0))) v = Vec3T<S>::UnitX();
+  }
+
+  bool stalled = false;
+  while (true) {
+    const S v_sq = v.squaredNorm();
+    if (v_in_set && (count == 4 || v_sq <= inside_sq)) {
+      out.status = Status::Intersecting;
+      break;
+    }
+    if (v_in_set && out.iterations >= tol.max_iterations) {
+      out.status = Status::IterationLimit;
+      break;
+    }
+    const Vec3T<S> w = diff.support_point(-v);
+    ++out.iterations;
+    const S vw = v.dot(w);
+    // A separating plane with room for the radii decides: the lower bound v.w / |v| exceeds
+    // `inside`, squared so the common one-iteration exit needs no square root.
+    if (vw > S(0) && vw * vw > inside_sq * v_sq) {
+      out.status = Status::Separated;
+      break;
+    }
+    if (v_in_set) {
+      // Converged with |v| > inside: separated (the same test as run_gjk_distance()).
+      const S gap = v_sq - vw;
+      if (gap <= S(0) || gap * gap <= touch * touch * v_sq) {
+        out.status = Status::Separated;
+        break;
+      }
+      bool duplicate = false;
+      for (int k = 0; k < count; ++k) duplicate |= points[k] == w;
+      if (duplicate) {
+        stalled = true;
+        break;
+      }
+    }
+    // Append w past the end; points[0..count) stay as they were until progress is certain.
+    points[count] = w;
+    directions[count] = -v;
+    const SubSimplex<S> closest = closest_of_simplex(points, count + 1);
+    if (!(closest.dist_sq <= std::numeric_limits<S>::max())) {
+      out.status = Status::InvalidInput;  // overflow, see run_gjk_distance()
+      return out;
+    }
+    if (v_in_set && closest.dist_sq >= v_sq) {
+      stalled = true;  // no progress: settled below
+      break;
+    }
+    const Vec3T<S> next = reduce(closest, count + 1);
+    v = next;
+    v_in_set = true;
+  }
+  out.upper = v_in_set ? v.norm() : std::numeric_limits<S>::infinity();
+  if (cache) {
+    cache->size = count;
+    for (int i = 0; i < count; ++i) cache->directions[i] = directions[i];
+    if (count == 0 && v.squaredNorm() > S(0)) {
+      cache->size = 1;
+      cache->directions[0] = -v;
+    }
+  }
+  if (stalled) {
+    // The bounds straddle `inside` and this simplex cannot tighten them: let the distance loop,
+    // with its recombination and restarts, decide.
+    const GjkOutcome<S> full = run_gjk_distance(diff, radius, size, tol, nullptr);
+    out.status = full.status;
+    out.upper = full.upper;
+    out.iterations += full.iterations;
   }
   return out;
 }

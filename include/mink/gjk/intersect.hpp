@@ -60,7 +60,7 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const S radius = a.core_radius() + b.core_radius();
   const S size = a.bounding_radius() + b.bounding_radius();
-  const auto gjk = detail::run_gjk<detail::GjkMode::Boolean>(diff, radius, size, tolerances, cache);
+  const auto gjk = detail::run_gjk_boolean(diff, radius, size, tolerances, cache);
   result.status = gjk.status;
   result.iterations = gjk.iterations;
   if (gjk.status == Status::InvalidInput) {

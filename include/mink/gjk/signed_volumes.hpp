@@ -186,27 +186,28 @@ SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
   return best;
 }
 
+/// The point of the simplex w[0..size) closest to the origin, with the sub-simplex that holds it.
+template <class S>
+SubSimplex<S> closest_of_simplex(const Vec3T<S>* w, int size) {
+  switch (size) {
+    case 1:
+      return closest_on_vertex(w, 0);
+    case 2:
+      return closest_on_segment(w, 0, 1);
+    case 3:
+      return closest_on_triangle(w, 0, 1, 2);
+    default:
+      return closest_on_tetrahedron(w);
+  }
+}
+
 /// Writes to `out` the smallest sub-simplex of `in` whose hull holds the point of `in` closest to
 /// the origin, with its weights, and returns that point. `in` and `out` may be the same simplex.
 template <class S>
 Vec3T<S> reduce_to_closest(const SimplexT<S>& in, SimplexT<S>& out) {
   Vec3T<S> w[4];
-  for (int i = 0; i < in.size; ++i) w[i] = in.vertices[i].w;
-  SubSimplex<S> r;
-  switch (in.size) {
-    case 1:
-      r = closest_on_vertex(w, 0);
-      break;
-    case 2:
-      r = closest_on_segment(w, 0, 1);
-      break;
-    case 3:
-      r = closest_on_triangle(w, 0, 1, 2);
-      break;
-    default:
-      r = closest_on_tetrahedron(w);
-      break;
-  }
+  for (int i = 0; i < 4; ++i) w[i] = i < in.size ? in.vertices[i].w : Vec3T<S>::Zero();
+  SubSimplex<S> r = closest_of_simplex(w, in.size);
   // Keep the vertices with a positive weight, in order (kept <= i, so in-place is safe).
   int kept = 0;
   for (int i = 0; i < in.size; ++i) {
@@ -223,7 +224,7 @@ Vec3T<S> reduce_to_closest(const SimplexT<S>& in, SimplexT<S>& out) {
     out.vertices[0] = in.vertices[best];
     out.weights[0] = S(1);
     kept = 1;
-    r.v = w[best];
+    r.v = in.vertices[best].w;
   }
   out.size = kept;
   return r.v;
