@@ -3,6 +3,8 @@
 #pragma once
 
 #include "mink/config.hpp"
+#include "mink/epa/contact.hpp"
+#include "mink/epa/epa.hpp"
 #include "mink/expected.hpp"
 #include "mink/gjk/distance.hpp"
 #include "mink/gjk/intersect.hpp"

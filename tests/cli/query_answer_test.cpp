@@ -57,9 +57,18 @@ TEST(QueryAnswer, SphereSphereMatchesAnalytic) {
       EXPECT_LE((*a.point_a - (ca + ra * n)).norm(), tolerance) << a.raw;
       EXPECT_LE((*a.point_b - (cb - rb * n)).norm(), tolerance) << a.raw;
     } else if (expected < -tolerance) {
-      EXPECT_EQ(a.status, "unsupported") << a.raw;
+      // Penetrating: depth r_a + r_b - |cb - ca|, normal along the line of centres (B moves
+      // away from A), deepest points on each sphere along it.
+      ASSERT_EQ(a.status, "ok") << a.raw;
       EXPECT_EQ(a.intersect, true);
       EXPECT_EQ(a.distance, 0.0);
+      EXPECT_NEAR(*a.depth, -expected, tolerance) << a.raw;
+      if ((cb - ca).norm() > 1e-6) {
+        const Vec3 n = (cb - ca).normalized();
+        EXPECT_LE((*a.normal - n).norm(), 1e-9) << a.raw;
+        EXPECT_LE((*a.point_a - (ca + ra * n)).norm(), tolerance) << a.raw;
+        EXPECT_LE((*a.point_b - (cb - rb * n)).norm(), tolerance) << a.raw;
+      }
     }
   }
 }
@@ -172,6 +181,11 @@ TEST(QueryAnswer, FieldsOfEachWant) {
   EXPECT_EQ(answer_one(apart + R"(,"want":"contact"})").keys, separated_contact);
   EXPECT_EQ(answer_one(apart + "}").keys, separated_contact) << "contact is the default";
   EXPECT_EQ(answer_one(apart + "}").depth, 0.0);
+  const Answer concentric = answer_one(R"({"a":{"type":"sphere","radius":1},"b":{"type":)"
+                                       R"("sphere","radius":2}})");
+  EXPECT_EQ(concentric.status, "ok") << concentric.raw;
+  EXPECT_EQ(concentric.depth, 3.0) << concentric.raw;
+  EXPECT_NE(concentric.raw.find("\"normal_chosen\":true"), std::string::npos) << concentric.raw;
 
   const Answer hit = answer_one(overlapping + R"(,"want":"intersect"})");
   EXPECT_EQ(hit.status, "ok");
@@ -181,11 +195,12 @@ TEST(QueryAnswer, FieldsOfEachWant) {
   EXPECT_EQ(hit_distance.keys, (Keys{"id", "status", "intersect", "distance", "iterations"}));
   EXPECT_EQ(hit_distance.distance, 0.0);
   const Answer hit_contact = answer_one(overlapping + "}");
-  EXPECT_EQ(hit_contact.status, "unsupported");
+  EXPECT_EQ(hit_contact.status, "ok");
   EXPECT_EQ(hit_contact.intersect, true);
   EXPECT_EQ(hit_contact.distance, 0.0);
-  EXPECT_NE(hit_contact.error.find("EPA"), std::string::npos) << hit_contact.raw;
-  EXPECT_EQ(hit_contact.keys, (Keys{"id", "status", "intersect", "distance", "error"}));
+  EXPECT_EQ(hit_contact.depth, 0.5) << hit_contact.raw;
+  EXPECT_EQ(*hit_contact.normal, Vec3(1, 0, 0)) << hit_contact.raw;
+  EXPECT_EQ(hit_contact.keys, separated_contact);
 }
 
 TEST(QueryAnswer, TimingAddsMicroseconds) {

@@ -103,21 +103,11 @@ void write_distance(const Query& query, const AnswerOptions& options, std::strin
     volatile int sink = 0;
     us = median_microseconds([&] { sink = sink + run().iterations; });
   }
-  const bool contact = query.want == Want::Contact;
-  if (r.intersect && contact) {
-    // Depth, normal and deepest points of penetrating shapes are EPA's job (the next issue).
-    begin_answer(query.id, "unsupported", out);
-    out +=
-        ",\"intersect\":true,\"distance\":0,\"error\":\"penetration depth, normal and points of "
-        "intersecting shapes need EPA (not yet built)\"";
-    return end_answer(options, us, out);
-  }
   begin_answer(query.id, status_name(r.status), out);
   append_field(out, "intersect");
   out += r.intersect ? "true" : "false";
   append_field(out, "distance");
   append_number(out, r.distance);
-  if (contact) out += ",\"depth\":0";
   // The normal and points are defined only for separated shapes; GJK leaves them zero otherwise.
   if (!r.intersect && r.normal.squaredNorm() > 0) {
     append_field(out, "normal");
@@ -136,10 +126,46 @@ void write_distance(const Query& query, const AnswerOptions& options, std::strin
   end_answer(options, us, out);
 }
 
+void write_contact(const Query& query, const AnswerOptions& options, std::string& out) {
+  const auto run = [&] { return contact(query.a, query.pose_a, query.b, query.pose_b); };
+  const ContactResult r = run();
+  if (r.status == Status::InvalidInput) return write_error(query.id, r.error, out);
+  if (!std::isfinite(r.distance) || !std::isfinite(r.depth) || !std::isfinite(r.error_bound) ||
+      !is_finite(r.normal) || !is_finite(r.point_a) || !is_finite(r.point_b))
+    return write_error(query.id, kNotFinite, out);
+  double us = 0;
+  if (options.timing) {
+    volatile int sink = 0;
+    us = median_microseconds([&] { sink = sink + run().iterations; });
+  }
+  begin_answer(query.id, status_name(r.status), out);
+  append_field(out, "intersect");
+  out += r.intersect ? "true" : "false";
+  append_field(out, "distance");
+  append_number(out, r.distance);
+  append_field(out, "depth");
+  append_number(out, r.depth);
+  append_field(out, "normal");
+  append_vec3(out, r.normal);
+  append_field(out, "point_a");
+  append_vec3(out, r.point_a);
+  append_field(out, "point_b");
+  append_vec3(out, r.point_b);
+  if (r.normal_chosen) out += ",\"normal_chosen\":true";
+  append_field(out, "iterations");
+  append_integer(out, r.iterations);
+  if (r.status == Status::IterationLimit) {
+    append_field(out, "error_bound");
+    append_number(out, r.error_bound);
+  }
+  end_answer(options, us, out);
+}
+
 }  // namespace
 
 void write_answer(const Query& query, const AnswerOptions& options, std::string& out) {
   if (query.want == Want::Intersect) return write_intersect(query, options, out);
+  if (query.want == Want::Contact) return write_contact(query, options, out);
   write_distance(query, options, out);
 }
 

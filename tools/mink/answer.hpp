@@ -20,9 +20,9 @@ struct AnswerOptions {
 /// - `intersect`: id, status, intersect, iterations.
 /// - `distance`: id, status, intersect, distance, then normal, point_a and point_b when the shapes
 ///   are separated, iterations.
-/// - `contact`: as `distance` plus `"depth": 0` when separated. Penetrating shapes need EPA for
-///   their depth, normal and points, which mink does not have yet: the answer is status
-///   `unsupported` with intersect, distance 0 and an error saying so.
+/// - `contact`: id, status, intersect, distance, depth, normal, point_a, point_b (closest points
+///   when separated, deepest points when penetrating: point_b - point_a = -depth * normal),
+///   `normal_chosen: true` when several normals were equally good, iterations.
 ///
 /// Status: Separated and Intersecting are `ok`; IterationLimit is `iteration_limit` and adds
 /// `error_bound`; a result the library refused, or one holding a number that is not finite, is an

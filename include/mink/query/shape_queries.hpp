@@ -1,9 +1,10 @@
 /// @file shape_queries.hpp
-/// intersect() and distance() on run-time Shapes: one dispatch on the pair of core types, then the
-/// same template code as the static shapes (see gjk/intersect.hpp and gjk/distance.hpp for the
-/// conventions, which are identical).
+/// intersect(), distance() and contact() on run-time Shapes: one dispatch on the pair of core
+/// types, then the same template code as the static shapes (see gjk/intersect.hpp, gjk/distance.hpp
+/// and epa/contact.hpp for the conventions, which are identical).
 #pragma once
 
+#include "mink/epa/contact.hpp"
 #include "mink/gjk/distance.hpp"
 #include "mink/gjk/intersect.hpp"
 #include "mink/support/shape.hpp"
@@ -15,5 +16,8 @@ IntersectResult intersect(const Shape& a, const Pose& pose_a, const Shape& b, co
 
 DistanceResult distance(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
                         const Tolerances& tolerances = {}, GjkCache* cache = nullptr);
+
+ContactResult contact(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
+                      const Tolerances& tolerances = {}, GjkCache* cache = nullptr);
 
 }  // namespace mink

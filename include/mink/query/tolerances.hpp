@@ -17,8 +17,13 @@ struct TolerancesT {
   /// (unit: dimensionless). Two shapes are touching, hence intersecting, when their distance is at
   /// most `relative * size`.
   S relative = std::max(S(1e-12), S(64) * std::numeric_limits<S>::epsilon());
-  /// Cap on support evaluations; hitting it gives Status::IterationLimit. Polytopes need about
-  /// 3 + log(points) iterations; curved shapes converge linearly and need up to a few dozen.
+  /// EPA stops when pushing out the face nearest the origin gains at most `relative_depth * size`;
+  /// the depth is then within that of the exact one (polytopes and boxes converge exactly, curved
+  /// cores linearly, hence a looser default than `relative`). (unit: dimensionless)
+  S relative_depth = std::max(S(1e-10), S(64) * std::numeric_limits<S>::epsilon());
+  /// Cap on support evaluations (per GJK run and per EPA run); hitting it gives
+  /// Status::IterationLimit. Polytopes need about 3 + log(points) iterations; curved shapes
+  /// converge linearly and need up to a few dozen.
   int max_iterations = 256;
 };
 

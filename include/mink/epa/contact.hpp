@@ -1,0 +1,155 @@
+/// @file contact.hpp
+/// The contact query: one call that answers whether two convex shapes intersect, their distance
+/// when apart or their penetration depth when not, the normal, and the closest or deepest points.
+///
+/// Frames: shapes in their local frames with poses to the world; results in the world frame.
+///
+/// Normal: unit, from A towards B. Separated: point_b - point_a = distance * normal. Penetrating:
+/// the direction in which B must move, by `depth`, to separate the shapes, and
+/// point_b - point_a = -depth * normal (point_a is A's deepest point inside B, point_b B's deepest
+/// point inside A). So in both cases moving B along the normal moves the shapes apart.
+///
+/// How: GJK on the cores (core + radius, see architecture.md). If the cores are apart, the shapes
+/// are separated when the core distance exceeds the sum of the radii and penetrate by the
+/// difference otherwise: exact for spheres and capsules, no EPA. Only when the cores themselves
+/// meet does EPA (epa.hpp) run on them, and the radii are added to its depth.
+///
+/// Ties: when several normals are equally good the query returns one of them and sets
+/// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric
+/// spheres (the line of centres if the centres differ by rounding, else A's local +z axis),
+/// capsules whose segments cross (the common perpendicular of the segments, sign towards B's side
+/// when it can be told) or overlap along a line (the line of centres' orthogonal part). Coincident
+/// boxes are not ties of this kind: their Minkowski difference has volume, and the normal is the
+/// axis of a face of least depth (the first EPA meets when several tie).
+///
+/// Tolerances: distances within `tolerances.relative * size` of zero count as touching
+/// (intersecting, depth 0); EPA stops when its bounds on the core depth are within
+/// `tolerances.relative_depth * size`, and `error_bound` reports the gap it stopped at.
+#pragma once
+
+#include "mink/epa/epa.hpp"
+#include "mink/gjk/distance.hpp"
+#include "mink/gjk/segment_cores.hpp"
+
+namespace mink {
+
+template <class S>
+struct ContactResultT {
+  /// Separated or Intersecting (penetrating or touching): every field is valid. IterationLimit:
+  /// GJK or EPA hit the cap; the fields are the best estimate and `error_bound` bounds the error
+  /// of the distance or depth. InvalidInput: nothing was computed and `error` says why.
+  Status status = Status::InvalidInput;
+  bool intersect = false;               ///< the shapes share a point (touching counts)
+  S distance = S(0);                    ///< >= 0 (unit: length); 0 when intersecting
+  S depth = S(0);                       ///< >= 0 (unit: length); 0 when separated or touching
+  Vec3T<S> normal = Vec3T<S>::UnitZ();  ///< unit, world frame, from A towards B (see above)
+  Vec3T<S> point_a = Vec3T<S>::Zero();  ///< closest (separated) or deepest point of A, world
+  Vec3T<S> point_b = Vec3T<S>::Zero();  ///< closest (separated) or deepest point of B, world
+  S error_bound = S(0);         ///< bound on the error of distance or depth (unit: length), >= 0
+  int iterations = 0;           ///< support evaluations of A - B, GJK and EPA together
+  bool normal_chosen = false;   ///< several normals were equally good; this is one of them
+  const char* error = nullptr;  ///< reason for InvalidInput, else nullptr
+};
+
+using ContactResult = ContactResultT<double>;
+
+namespace detail {
+
+/// Fills the normal, points, distance or depth of `result` from the closest points of the cores,
+/// on_a and on_b in A's frame, at core distance `core_distance` > 0 (B's core minus A's core
+/// along the normal); `inside` is the sum of the radii plus the touching tolerance.
+template <class S>
+void contact_from_cores(const Vec3T<S>& on_a, const Vec3T<S>& on_b, S core_distance, S radius_a,
+                        S radius_b, S inside, const PoseT<S>& pose_a, ContactResultT<S>& result) {
+  const Vec3T<S> normal = (on_b - on_a) / core_distance;
+  const S radius = radius_a + radius_b;
+  result.intersect = core_distance <= inside;
+  result.distance = result.intersect ? S(0) : core_distance - radius;
+  result.depth = std::max(S(0), radius - core_distance);
+  result.normal = pose_a.rotate(normal);
+  result.point_a = pose_a.apply(on_a + radius_a * normal);
+  result.point_b = pose_a.apply(on_b - radius_b * normal);
+}
+
+}  // namespace detail
+
+/// Contact between a (at pose_a) and b (at pose_b). `cache` (optional, in/out) warm-starts GJK
+/// from the previous query of the same pair.
+template <ConvexShape A, ConvexShape B>
+requires std::same_as<typename A::Scalar, typename B::Scalar> ContactResultT<typename A::Scalar>
+contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+        const PoseT<typename A::Scalar>& pose_b,
+        const TolerancesT<typename A::Scalar>& tolerances = {},
+        GjkCacheT<typename A::Scalar>* cache = nullptr) {
+  using S = typename A::Scalar;
+  ContactResultT<S> result;
+  if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
+  const S radius_a = a.core_radius(), radius_b = b.core_radius();
+  const S size = a.bounding_radius() + b.bounding_radius();
+  const S touch = tolerances.relative * size;
+  const S inside = radius_a + radius_b + touch;
+  if constexpr (detail::kSegmentCores<A, B>) {
+    // Spheres, capsules, points, segments: closed form while the cores are apart.
+    Vec3T<S> p0, p1, q0, q1, on_a, on_b;
+    detail::SegmentCore<A>::world(a, pose_a, pose_a.translation, p0, p1);
+    detail::SegmentCore<B>::world(b, pose_b, pose_a.translation, q0, q1);
+    detail::closest_points_of_segments(p0, p1, q0, q1, on_a, on_b);
+    const S core_distance = (on_b - on_a).norm();
+    if (!(core_distance <= std::numeric_limits<S>::max())) {
+      result.error = detail::kOverflowError;
+      return result;
+    }
+    if (core_distance > touch) {
+      // on_a, on_b are world points shifted to A's origin: use a pose without rotation.
+      const PoseT<S> shift = PoseT<S>::from_translation(pose_a.translation);
+      detail::contact_from_cores(on_a, on_b, core_distance, radius_a, radius_b, inside, shift,
+                                 result);
+      result.status = result.intersect ? Status::Intersecting : Status::Separated;
+      return result;
+    }
+  }
+  const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
+  const auto gjk = detail::run_gjk_distance(diff, radius_a + radius_b, size, tolerances, cache);
+  result.iterations = gjk.iterations;
+  if (gjk.status == Status::InvalidInput) {
+    result.error = detail::kOverflowError;
+    return result;
+  }
+  if (gjk.upper > touch) {
+    // The cores are apart: separated, or penetrating by the radii only.
+    Vec3T<S> on_a = Vec3T<S>::Zero(), on_b = Vec3T<S>::Zero();
+    for (int i = 0; i < gjk.simplex.size; ++i) {
+      on_a += gjk.simplex.weights[i] * gjk.simplex.vertices[i].a;
+      on_b += gjk.simplex.weights[i] * gjk.simplex.vertices[i].b;
+    }
+    detail::contact_from_cores(on_a, on_b, gjk.upper, radius_a, radius_b, inside, pose_a, result);
+    result.error_bound = std::max(S(0), gjk.upper - gjk.lower);
+    result.status = gjk.status == Status::IterationLimit
+                        ? Status::IterationLimit
+                        : (result.intersect ? Status::Intersecting : Status::Separated);
+    return result;
+  }
+  // The cores meet: EPA on the cores, then add the radii.
+  const S centres = diff.translation.norm();
+  const Vec3T<S> fallback =
+      centres > S(0) ? Vec3T<S>(diff.translation / centres) : Vec3T<S>::UnitZ();
+  const auto epa = detail::run_epa(diff, gjk.simplex, size, tolerances, fallback);
+  result.iterations += epa.iterations;
+  if (epa.status == Status::InvalidInput) {
+    result.error = detail::kOverflowError;
+    return result;
+  }
+  const Vec3T<S>& n = epa.normal;
+  result.intersect = true;
+  result.depth = std::max(S(0), epa.depth) + radius_a + radius_b;
+  result.error_bound = std::max(S(0), epa.upper - epa.depth);
+  result.normal = pose_a.rotate(n);
+  result.point_a = pose_a.apply(epa.a + radius_a * n);
+  result.point_b = pose_a.apply(epa.b - radius_b * n);
+  result.normal_chosen = epa.degenerate;
+  result.status =
+      epa.status == Status::IterationLimit ? Status::IterationLimit : Status::Intersecting;
+  return result;
+}
+
+}  // namespace mink

@@ -1,0 +1,457 @@
+/// @file epa.hpp
+/// The Expanding Polytope Algorithm (van den Bergen 2001): penetration depth and direction of two
+/// intersecting cores, seeded by GJK's final simplex.
+///
+/// The penetration depth of A and B is the distance from the origin to the boundary of A - B, and
+/// the direction B must move to separate is the outward normal of A - B there. EPA keeps a convex
+/// polytope P inside A - B (a triangle mesh of support points) and repeatedly pushes out its face
+/// nearest the origin by the support point of A - B along that face's normal, until the push
+/// gains less than the tolerance. Two bounds bracket the answer at every step: the nearest face's
+/// distance d (P lies inside A - B) and the smallest support value h(n) = max over A - B of n.x
+/// seen along a face normal (every direction's support bounds the depth from above). The result
+/// reports both, so a capped run says how far it can be off.
+///
+/// Robustness, in the order the failures show up in other libraries:
+///   - GJK often ends with fewer than 4 points (touching, flat or needle shapes). The seed grows
+///     the simplex with support points along directions orthogonal to it, into a tetrahedron or a
+///     double pyramid around the last triangle; when no direction leaves a plane, a line or a
+///     point, A - B is flat there, the core depth is 0 and the normal is a direction of that
+///     degenerate set (the choice is documented in contact.hpp).
+///   - Face distances are signed, so an origin on the boundary of P, or just outside it (touching
+///     within tolerance), needs no special case: the face it lies beyond has d <= 0 and is pushed
+///     out first.
+///   - Every expansion is checked before it is committed: the visible region must have a single
+///     loop for its horizon, and every new face must have a normal and keep P convex. If rounding
+///     breaks any of that, the expansion is undone and EPA stops with the bracket it has.
+///   - Every loop is capped (tolerances.max_iterations support calls), and the cap is a status.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "mink/gjk/gjk.hpp"
+
+namespace mink::detail {
+
+template <class S>
+struct EpaFace {
+  int v[3];         ///< vertex indices, counter-clockwise seen from outside P
+  int adj[3];       ///< face across edge i (from v[i] to v[(i + 1) % 3])
+  int adj_edge[3];  ///< index of that edge in the neighbour
+  Vec3T<S> n;       ///< unit outward normal
+  S d;              ///< signed distance of the origin below the face's plane: n . v[0]
+  bool live;
+};
+
+/// Scratch memory of one EPA run, kept per thread so that queries do not allocate once warm.
+template <class S>
+struct EpaWorkspace {
+  std::vector<SimplexVertexT<S>> vertices;
+  std::vector<EpaFace<S>> faces;
+  std::vector<int> removed;  ///< faces removed by the current expansion
+  std::vector<int> stack;
+  struct Horizon {
+    int face, edge;
+  };
+  std::vector<Horizon> horizon;
+  std::vector<int> created;
+
+  void clear() {
+    vertices.clear();
+    faces.clear();
+  }
+};
+
+template <class S>
+EpaWorkspace<S>& epa_workspace() {
+  thread_local EpaWorkspace<S> workspace;
+  return workspace;
+}
+
+template <class S>
+struct EpaOutcome {
+  /// Intersecting: converged (or stopped by rounding) with the bracket below; IterationLimit:
+  /// the cap was hit; InvalidInput: the arithmetic overflowed.
+  Status status = Status::Intersecting;
+  S depth = S(0);                       ///< lower bound on the core depth (may be slightly < 0)
+  S upper = S(0);                       ///< upper bound on the core depth
+  Vec3T<S> normal = Vec3T<S>::UnitZ();  ///< unit, A's frame: the direction B moves to separate
+  Vec3T<S> a = Vec3T<S>::Zero();        ///< deepest point of A's core (A's frame)
+  Vec3T<S> b = Vec3T<S>::Zero();        ///< deepest point of B's core (A's frame)
+  int iterations = 0;                   ///< support calls
+  bool degenerate = false;  ///< A - B is flat, a segment or a point: the normal was chosen
+};
+
+/// Unit normal of the triangle (p, q, r), counter-clockwise; false when it has no area to
+/// rounding.
+template <class S>
+bool triangle_normal(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Vec3T<S>& n) {
+  const Vec3T<S> e1 = q - p, e2 = r - p;
+  const Vec3T<S> c = e1.cross(e2);
+  const S cc = c.squaredNorm();
+  if (!(cc > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm()) || !(cc > S(0))) return false;
+  n = c / std::sqrt(cc);
+  return true;
+}
+
+/// Makes face (i, j, k) of the workspace; false if it is degenerate.
+template <class S>
+bool make_epa_face(EpaWorkspace<S>& ws, int i, int j, int k, EpaFace<S>& face) {
+  const Vec3T<S>& p = ws.vertices[i].w;
+  const Vec3T<S>& q = ws.vertices[j].w;
+  const Vec3T<S>& r = ws.vertices[k].w;
+  if (!triangle_normal(p, q, r, face.n)) return false;
+  face.v[0] = i;
+  face.v[1] = j;
+  face.v[2] = k;
+  // The plane's offset from all three vertices: less sensitive to which one is farthest.
+  face.d = (face.n.dot(p) + face.n.dot(q) + face.n.dot(r)) / S(3);
+  face.live = true;
+  for (int e = 0; e < 3; ++e) face.adj[e] = face.adj_edge[e] = -1;
+  return true;
+}
+
+/// Connects every face of `ids` with the others of `ids` that share an edge (opposite direction).
+template <class S>
+void link_faces(EpaWorkspace<S>& ws, const int* ids, int count) {
+  for (int x = 0; x < count; ++x) {
+    EpaFace<S>& f = ws.faces[ids[x]];
+    for (int e = 0; e < 3; ++e) {
+      if (f.adj[e] >= 0) continue;
+      const int from = f.v[e], to = f.v[(e + 1) % 3];
+      for (int y = 0; y < count && f.adj[e] < 0; ++y) {
+        if (y == x) continue;
+        EpaFace<S>& g = ws.faces[ids[y]];
+        for (int k = 0; k < 3; ++k) {
+          if (g.v[k] == to && g.v[(k + 1) % 3] == from) {
+            f.adj[e] = ids[y];
+            f.adj_edge[e] = k;
+            g.adj[k] = ids[x];
+            g.adj_edge[k] = e;
+            break;
+          }
+        }
+      }
+    }
+  }
+}
+
+/// Builds P as the hull of 4 or 5 points in general position (a tetrahedron, or a double pyramid
+/// over the triangle 0-1-2 with apexes 3 and 4 on opposite sides). Returns false on degeneracy.
+template <class S>
+bool seed_polytope(EpaWorkspace<S>& ws) {
+  const int n = static_cast<int>(ws.vertices.size());
+  static constexpr int kTetra[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
+  static constexpr int kDouble[6][3] = {{0, 1, 3}, {1, 2, 3}, {2, 0, 3},
+                                        {1, 0, 4}, {2, 1, 4}, {0, 2, 4}};
+  const int(*table)[3] = n == 4 ? kTetra : kDouble;
+  const int count = n == 4 ? 4 : 6;
+  // Orient by an interior point: the centroid of the vertices.
+  Vec3T<S> centre = Vec3T<S>::Zero();
+  for (const auto& vertex : ws.vertices) centre += vertex.w;
+  centre /= S(n);
+  int ids[6];
+  for (int f = 0; f < count; ++f) {
+    int i = table[f][0], j = table[f][1], k = table[f][2];
+    Vec3T<S> normal;
+    if (!triangle_normal(ws.vertices[i].w, ws.vertices[j].w, ws.vertices[k].w, normal))
+      return false;
+    if (normal.dot(ws.vertices[i].w - centre) < S(0)) std::swap(j, k);
+    EpaFace<S> face;
+    if (!make_epa_face(ws, i, j, k, face)) return false;
+    ids[f] = static_cast<int>(ws.faces.size());
+    ws.faces.push_back(face);
+  }
+  link_faces(ws, ids, count);
+  for (int f = 0; f < count; ++f)
+    for (int e = 0; e < 3; ++e)
+      if (ws.faces[ids[f]].adj[e] < 0) return false;
+  return true;
+}
+
+/// A direction orthogonal to the unit-free vector e (not normalised).
+template <class S>
+Vec3T<S> orthogonal(const Vec3T<S>& e) {
+  const Vec3T<S> abs = e.cwiseAbs();
+  const Vec3T<S> axis = abs.x() <= abs.y() && abs.x() <= abs.z()
+                            ? Vec3T<S>::UnitX()
+                            : (abs.y() <= abs.z() ? Vec3T<S>::UnitY() : Vec3T<S>::UnitZ());
+  return e.cross(axis);
+}
+
+/// EPA on the cores of `diff`, seeded by GJK's final `simplex` (the cores intersect or touch
+/// within tolerance). `size` is the sum of the bounding radii; the expansion stops when a push
+/// gains at most `tol.relative_depth * size`. `fallback` is the normal to use when A - B is a
+/// point (any direction is as good): the line of centres, or any unit vector.
+template <ConvexShape A, ConvexShape B>
+EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
+                                       const SimplexT<typename A::Scalar>& simplex,
+                                       typename A::Scalar size,
+                                       const TolerancesT<typename A::Scalar>& tol,
+                                       const Vec3T<typename A::Scalar>& fallback) {
+  using S = typename A::Scalar;
+  EpaOutcome<S> out;
+  EpaWorkspace<S>& ws = epa_workspace<S>();
+  ws.clear();
+  const S gain_tol = tol.relative_depth * size;
+  // A support point adds volume only if it leaves the current affine hull by more than this.
+  const S flat_tol = tol.relative * size;
+
+  for (int i = 0; i < simplex.size; ++i) ws.vertices.push_back(simplex.vertices[i]);
+  // Witness points of the degenerate answers: the point of GJK's simplex nearest the origin.
+  Vec3T<S> gjk_a = Vec3T<S>::Zero(), gjk_b = Vec3T<S>::Zero();
+  {
+    S total = S(0);
+    for (int i = 0; i < simplex.size; ++i) total += simplex.weights[i];
+    for (int i = 0; i < simplex.size; ++i) {
+      const S weight = total > S(0) ? simplex.weights[i] / total : S(1) / S(simplex.size);
+      gjk_a += weight * simplex.vertices[i].a;
+      gjk_b += weight * simplex.vertices[i].b;
+    }
+  }
+  auto support = [&](const Vec3T<S>& d) {
+    SimplexVertexT<S> vertex;
+    diff.support(d, vertex);
+    ++out.iterations;
+    return vertex;
+  };
+  // A - B has no volume near the origin: the core depth is its support value along `normal`
+  // (about 0), the points GJK's.
+  auto degenerate = [&](const Vec3T<S>& normal) {
+    out.degenerate = true;
+    out.normal = normal;
+    out.a = gjk_a;
+    out.b = gjk_b;
+    const S h = normal.dot(support(normal).w);
+    out.depth = std::min(S(0), h);
+    out.upper = std::max(S(0), h);
+    return out;
+  };
+
+  // 1. Grow GJK's simplex to a full-dimensional seed.
+  if (ws.vertices.empty()) ws.vertices.push_back(support(fallback));
+  if (ws.vertices.size() == 4) {
+    const Vec3T<S> e1 = ws.vertices[1].w - ws.vertices[0].w;
+    const Vec3T<S> e2 = ws.vertices[2].w - ws.vertices[0].w;
+    const Vec3T<S> e3 = ws.vertices[3].w - ws.vertices[0].w;
+    const S det = e1.dot(e2.cross(e3));
+    if (!(det * det > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm() * e3.squaredNorm())) {
+      // Flat tetrahedron: keep the triangle with the largest area and grow it again.
+      int drop = 0;
+      S best = S(-1);
+      for (int skip = 0; skip < 4; ++skip) {
+        int idx[3], m = 0;
+        for (int i = 0; i < 4; ++i)
+          if (i != skip) idx[m++] = i;
+        const S area = (ws.vertices[idx[1]].w - ws.vertices[idx[0]].w)
+                           .cross(ws.vertices[idx[2]].w - ws.vertices[idx[0]].w)
+                           .squaredNorm();
+        if (area > best) {
+          best = area;
+          drop = skip;
+        }
+      }
+      ws.vertices.erase(ws.vertices.begin() + drop);
+    }
+  }
+  if (ws.vertices.size() == 1) {
+    // A point: the farthest support point along the six axis directions.
+    SimplexVertexT<S> best_vertex;
+    S best = S(-1);
+    for (int axis = 0; axis < 6; ++axis) {
+      Vec3T<S> d = Vec3T<S>::Zero();
+      d[axis / 2] = axis % 2 ? S(-1) : S(1);
+      const SimplexVertexT<S> vertex = support(d);
+      const S dist = (vertex.w - ws.vertices[0].w).norm();
+      if (dist > best) {
+        best = dist;
+        best_vertex = vertex;
+      }
+    }
+    if (!(best > flat_tol)) {
+      const Vec3T<S> normal = fallback;
+      return degenerate(normal);
+    }
+    ws.vertices.push_back(best_vertex);
+  }
+  if (ws.vertices.size() == 2) {
+    // A segment: the support point farthest from its line, along four orthogonal directions.
+    const Vec3T<S> e = ws.vertices[1].w - ws.vertices[0].w;
+    const Vec3T<S> u1 = orthogonal(e).normalized();
+    const Vec3T<S> u2 = e.cross(u1).normalized();
+    SimplexVertexT<S> best_vertex;
+    S best = S(-1);
+    for (const Vec3T<S>& d : {u1, Vec3T<S>(-u1), u2, Vec3T<S>(-u2)}) {
+      const SimplexVertexT<S> vertex = support(d);
+      const S dist = (vertex.w - ws.vertices[0].w).cross(e).norm() / e.norm();
+      if (dist > best) {
+        best = dist;
+        best_vertex = vertex;
+      }
+    }
+    if (!(best > flat_tol)) {
+      // A - B is a segment: any direction orthogonal to it; prefer the line of centres'
+      // component orthogonal to it, which separates concentric-looking pairs the expected way.
+      Vec3T<S> normal = fallback - e * (fallback.dot(e) / e.squaredNorm());
+      normal = normal.squaredNorm() > S(1e-24) ? Vec3T<S>(normal.normalized()) : u1;
+      return degenerate(normal);
+    }
+    ws.vertices.push_back(best_vertex);
+  }
+  if (ws.vertices.size() == 3) {
+    Vec3T<S> n;
+    if (!triangle_normal(ws.vertices[0].w, ws.vertices[1].w, ws.vertices[2].w, n)) {
+      // A sliver: drop its middle point and grow again from the segment (rare, so recursion by
+      // hand is not worth it; treat it as the segment's degenerate case).
+      const Vec3T<S> e = ws.vertices[1].w - ws.vertices[0].w;
+      const Vec3T<S> u = orthogonal(e).normalized();
+      return degenerate(u);
+    }
+    const SimplexVertexT<S> up = support(n);
+    const SimplexVertexT<S> down = support(-n);
+    const S plane = n.dot(ws.vertices[0].w);
+    const S rise = n.dot(up.w) - plane, fall = plane - n.dot(down.w);
+    if (!(rise > flat_tol) && !(fall > flat_tol)) {
+      // A - B is flat: the side with the smaller support value is the better normal.
+      return degenerate(n.dot(up.w) <= -n.dot(down.w) ? n : Vec3T<S>(-n));
+    }
+    // A tetrahedron, or a double pyramid when A - B extends to both sides of the triangle (the
+    // origin may lie on either side of it).
+    if (rise > flat_tol) ws.vertices.push_back(up);
+    if (fall > flat_tol) ws.vertices.push_back(down);
+  }
+  if (!seed_polytope(ws)) return degenerate(fallback);
+
+  // 2. Expand.
+  S upper = std::numeric_limits<S>::infinity();
+  int best = -1;
+  while (true) {
+    best = -1;
+    for (int f = 0; f < static_cast<int>(ws.faces.size()); ++f)
+      if (ws.faces[f].live && (best < 0 || ws.faces[f].d < ws.faces[best].d)) best = f;
+    const EpaFace<S>& face = ws.faces[best];
+    if (out.iterations >= tol.max_iterations) {
+      out.status = Status::IterationLimit;
+      break;
+    }
+    const SimplexVertexT<S> w = support(face.n);
+    const S h = face.n.dot(w.w);
+    if (!(std::abs(h) <= std::numeric_limits<S>::max())) {
+      out.status = Status::InvalidInput;
+      return out;
+    }
+    upper = std::min(upper, h);
+    if (h - face.d <= gain_tol) break;  // the face lies on the boundary of A - B
+    bool repeated = false;
+    for (int k = 0; k < 3; ++k) repeated |= ws.vertices[face.v[k]].w == w.w;
+    if (repeated) break;
+
+    // Faces visible from w: a connected region grown from the nearest face.
+    const int wi = static_cast<int>(ws.vertices.size());
+    ws.vertices.push_back(w);
+    ws.removed.clear();
+    ws.horizon.clear();
+    ws.stack.clear();
+    ws.faces[best].live = false;
+    ws.removed.push_back(best);
+    ws.stack.push_back(best);
+    while (!ws.stack.empty()) {
+      const int f = ws.stack.back();
+      ws.stack.pop_back();
+      for (int e = 0; e < 3; ++e) {
+        const int g = ws.faces[f].adj[e];
+        if (!ws.faces[g].live) continue;
+        if (ws.faces[g].n.dot(w.w) - ws.faces[g].d > S(0)) {
+          ws.faces[g].live = false;
+          ws.removed.push_back(g);
+          ws.stack.push_back(g);
+        } else {
+          ws.horizon.push_back({g, ws.faces[f].adj_edge[e]});
+        }
+      }
+    }
+    // New faces over the horizon, checked before anything is linked.
+    bool valid = ws.horizon.size() >= 3;
+    ws.created.clear();
+    for (std::size_t h_i = 0; valid && h_i < ws.horizon.size(); ++h_i) {
+      const auto [g, k] = ws.horizon[h_i];
+      const EpaFace<S>& neighbour = ws.faces[g];
+      const int from = neighbour.v[(k + 1) % 3], to = neighbour.v[k];
+      EpaFace<S> created;
+      if (!make_epa_face(ws, from, to, wi, created)) {
+        valid = false;
+        break;
+      }
+      // Convexity across the horizon edge: the neighbour's far vertex is below the new face.
+      const Vec3T<S>& far = ws.vertices[neighbour.v[(k + 2) % 3]].w;
+      if (created.n.dot(far) - created.d > flat_tol) {
+        valid = false;
+        break;
+      }
+      created.adj[0] = g;
+      created.adj_edge[0] = k;
+      ws.created.push_back(static_cast<int>(ws.faces.size()));
+      ws.faces.push_back(created);
+    }
+    // The horizon must be one simple loop: each new face's edge 1 (to -> w) meets exactly one
+    // other new face's edge 2 (w -> from).
+    if (valid) {
+      for (const int c : ws.created) {
+        int matches = 0, match = -1;
+        for (const int o : ws.created)
+          if (o != c && ws.faces[o].v[0] == ws.faces[c].v[1]) {
+            ++matches;
+            match = o;
+          }
+        if (matches != 1) {
+          valid = false;
+          break;
+        }
+        ws.faces[c].adj[1] = match;
+        ws.faces[c].adj_edge[1] = 2;
+        ws.faces[match].adj[2] = c;
+        ws.faces[match].adj_edge[2] = 1;
+      }
+    }
+    if (!valid) {
+      // Undo: drop the new faces and the vertex, revive the removed faces, stop here.
+      ws.faces.resize(ws.faces.size() - ws.created.size());
+      ws.vertices.pop_back();
+      for (const int f : ws.removed) ws.faces[f].live = true;
+      break;
+    }
+    for (const int c : ws.created) {
+      const EpaFace<S>& created = ws.faces[c];
+      EpaFace<S>& neighbour = ws.faces[created.adj[0]];
+      neighbour.adj[created.adj_edge[0]] = c;
+      neighbour.adj_edge[created.adj_edge[0]] = 0;
+    }
+  }
+
+  // 3. The answer from the nearest face: the origin's projection d n in barycentric coordinates.
+  const EpaFace<S>& face = ws.faces[best];
+  const Vec3T<S> p = face.n * face.d;
+  S lambda[3];
+  S total = S(0);
+  for (int k = 0; k < 3; ++k) {
+    const Vec3T<S>& q = ws.vertices[face.v[(k + 1) % 3]].w;
+    const Vec3T<S>& r = ws.vertices[face.v[(k + 2) % 3]].w;
+    lambda[k] = std::max(S(0), face.n.dot((q - p).cross(r - p)));
+    total += lambda[k];
+  }
+  out.a = Vec3T<S>::Zero();
+  out.b = Vec3T<S>::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const S weight = total > S(0) ? lambda[k] / total : S(1) / S(3);
+    out.a += weight * ws.vertices[face.v[k]].a;
+    out.b += weight * ws.vertices[face.v[k]].b;
+  }
+  out.normal = face.n;
+  out.depth = face.d;
+  out.upper = std::max(face.d, upper);
+  return out;
+}
+
+}  // namespace mink::detail
