@@ -57,10 +57,33 @@ struct EpaWorkspace {
   };
   std::vector<Horizon> horizon;
   std::vector<int> created;
+  /// Live faces by distance, nearest on top (a min-heap; removed faces are skipped when they
+  /// surface).
+  struct Queued {
+    S d;
+    int face;
+    bool operator<(const Queued& other) const { return d > other.d; }
+  };
+  std::vector<Queued> queue;
 
   void clear() {
     vertices.clear();
     faces.clear();
+    queue.clear();
+  }
+
+  void enqueue(int face) {
+    queue.push_back({faces[face].d, face});
+    std::push_heap(queue.begin(), queue.end());
+  }
+
+  /// The live face nearest the origin.
+  int nearest() {
+    while (!faces[queue.front().face].live) {
+      std::pop_heap(queue.begin(), queue.end());
+      queue.pop_back();
+    }
+    return queue.front().face;
   }
 };
 
@@ -168,6 +191,7 @@ bool seed_polytope(EpaWorkspace<S>& ws) {
   for (int f = 0; f < count; ++f)
     for (int e = 0; e < 3; ++e)
       if (ws.faces[ids[f]].adj[e] < 0) return false;
+  for (int f = 0; f < count; ++f) ws.enqueue(ids[f]);
   return true;
 }
 
@@ -328,9 +352,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   S upper = std::numeric_limits<S>::infinity();
   int best = -1;
   while (true) {
-    best = -1;
-    for (int f = 0; f < static_cast<int>(ws.faces.size()); ++f)
-      if (ws.faces[f].live && (best < 0 || ws.faces[f].d < ws.faces[best].d)) best = f;
+    best = ws.nearest();
     const EpaFace<S>& face = ws.faces[best];
     if (out.iterations >= tol.max_iterations) {
       out.status = Status::IterationLimit;
@@ -427,6 +449,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       EpaFace<S>& neighbour = ws.faces[created.adj[0]];
       neighbour.adj[created.adj_edge[0]] = c;
       neighbour.adj_edge[created.adj_edge[0]] = 0;
+      ws.enqueue(c);
     }
   }
 

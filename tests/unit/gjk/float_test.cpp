@@ -2,6 +2,8 @@
 // ones (computed in long double by tests/oracle/analytic.hpp).
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "mink/mink.hpp"
 #include "oracle/analytic.hpp"
 #include "oracle/random.hpp"
@@ -54,6 +56,60 @@ TEST(GjkFloat, SpheresApartExample) {
   EXPECT_EQ(r.status, mink::Status::Separated);
   EXPECT_NEAR(r.distance, 1.5f, 1e-6f);
   EXPECT_NEAR(r.normal.x(), 1.0f, 1e-6f);
+}
+
+}  // namespace
+
+namespace {
+
+// contact() in float: penetrating boxes against the minimum overlap of their projections on the
+// 15 separating axes, computed here in long double.
+TEST(ContactFloat, BoxBoxDepthMatchesSeparatingAxes) {
+  const std::uint64_t base = 71000;
+  const int n = oracle::sweep_count(300);
+  int penetrating = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    oracle::Rng rng(seed);
+    const mink::BoxT<float> a{
+        Vec3F(float(rng.uniform(0.2, 1)), float(rng.uniform(0.2, 1)), float(rng.uniform(0.2, 1)))};
+    const mink::BoxT<float> b{
+        Vec3F(float(rng.uniform(0.2, 1)), float(rng.uniform(0.2, 1)), float(rng.uniform(0.2, 1)))};
+    const mink::Quat qa = rng.rotation();
+    const mink::Quat qb = rng.rotation();
+    const PoseF pa = PoseF::from(Vec3F::Zero(), qa.cast<float>());
+    const PoseF pb = PoseF::from(rng.in_ball(1).cast<float>(), qb.cast<float>());
+    using oracle::Real;
+    using oracle::V3;
+    const oracle::M3 ra = pa.rotation.cast<Real>(), rb = pb.rotation.cast<Real>();
+    const V3 ea = a.half_extents.cast<Real>(), eb = b.half_extents.cast<Real>();
+    const V3 t = pb.translation.cast<Real>();
+    Real depth = std::numeric_limits<Real>::infinity();
+    auto axis = [&](V3 u) {
+      if (u.norm() < 1e-6L) return;
+      u.normalize();
+      const Real half_a = (ra.transpose() * u).cwiseAbs().dot(ea);
+      const Real half_b = (rb.transpose() * u).cwiseAbs().dot(eb);
+      depth = std::min(depth, half_a + half_b - std::abs(u.dot(t)));
+    };
+    for (int p = 0; p < 3; ++p) {
+      axis(ra.col(p));
+      axis(rb.col(p));
+      for (int q = 0; q < 3; ++q) axis(ra.col(p).cross(rb.col(q)));
+    }
+    const auto got = mink::contact(a, pa, b, pb);
+    const float size = a.half_extents.norm() + b.half_extents.norm();
+    ASSERT_NE(got.status, mink::Status::InvalidInput);
+    ASSERT_TRUE(std::isfinite(got.depth) && mink::is_finite(got.normal));
+    EXPECT_NEAR(got.normal.norm(), 1.0f, 1e-5f);
+    if (depth > 1e-4L * size) {
+      ++penetrating;
+      EXPECT_TRUE(got.intersect);
+      EXPECT_NEAR(got.depth, float(depth), 1e-5f * size);
+    }
+  }
+  EXPECT_GT(penetrating, n / 4);
 }
 
 }  // namespace
