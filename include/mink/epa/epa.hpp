@@ -119,21 +119,26 @@ bool triangle_normal(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Ve
   return true;
 }
 
-/// Makes face (i, j, k) of the workspace; false if it is degenerate.
+/// Appends face (i, j, k) to the workspace and returns its index, or -1 (and appends nothing) if
+/// it is degenerate. Built in place: a face assembled on the stack and copied in costs a
+/// store-forwarding stall per field, which was a sixth of EPA's time.
 template <class S>
-bool make_epa_face(EpaWorkspace<S>& ws, int i, int j, int k, EpaFace<S>& face) {
+int make_epa_face(EpaWorkspace<S>& ws, int i, int j, int k) {
   const Vec3T<S>& p = ws.vertices[i].w;
   const Vec3T<S>& q = ws.vertices[j].w;
   const Vec3T<S>& r = ws.vertices[k].w;
-  if (!triangle_normal(p, q, r, face.n)) return false;
+  Vec3T<S> n;
+  if (!triangle_normal(p, q, r, n)) return -1;
+  EpaFace<S>& face = ws.faces.emplace_back();
+  face.n = n;
   face.v[0] = i;
   face.v[1] = j;
   face.v[2] = k;
   // The plane's offset from all three vertices: less sensitive to which one is farthest.
-  face.d = (face.n.dot(p) + face.n.dot(q) + face.n.dot(r)) / S(3);
+  face.d = (n.dot(p) + n.dot(q) + n.dot(r)) / S(3);
   face.live = true;
   for (int e = 0; e < 3; ++e) face.adj[e] = face.adj_edge[e] = -1;
-  return true;
+  return static_cast<int>(ws.faces.size()) - 1;
 }
 
 /// Connects every face of `ids` with the others of `ids` that share an edge (opposite direction).
@@ -182,10 +187,7 @@ bool seed_polytope(EpaWorkspace<S>& ws) {
     if (!triangle_normal(ws.vertices[i].w, ws.vertices[j].w, ws.vertices[k].w, normal))
       return false;
     if (normal.dot(ws.vertices[i].w - centre) < S(0)) std::swap(j, k);
-    EpaFace<S> face;
-    if (!make_epa_face(ws, i, j, k, face)) return false;
-    ids[f] = static_cast<int>(ws.faces.size());
-    ws.faces.push_back(face);
+    if ((ids[f] = make_epa_face(ws, i, j, k)) < 0) return false;
   }
   link_faces(ws, ids, count);
   for (int f = 0; f < count; ++f)
@@ -219,6 +221,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   EpaOutcome<S> out;
   EpaWorkspace<S>& ws = epa_workspace<S>();
   ws.clear();
+  ws.faces.reserve(128);
   const S gain_tol = tol.relative_depth * size;
   // A support point adds volume only if it leaves the current affine hull by more than this.
   const S flat_tol = tol.relative * size;
@@ -399,23 +402,22 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     ws.created.clear();
     for (std::size_t h_i = 0; valid && h_i < ws.horizon.size(); ++h_i) {
       const auto [g, k] = ws.horizon[h_i];
-      const EpaFace<S>& neighbour = ws.faces[g];
-      const int from = neighbour.v[(k + 1) % 3], to = neighbour.v[k];
-      EpaFace<S> created;
-      if (!make_epa_face(ws, from, to, wi, created)) {
+      const int from = ws.faces[g].v[(k + 1) % 3], to = ws.faces[g].v[k];
+      const int far = ws.faces[g].v[(k + 2) % 3];
+      const int c = make_epa_face(ws, from, to, wi);
+      if (c < 0) {
         valid = false;
         break;
       }
-      // Convexity across the horizon edge: the neighbour's far vertex is below the new face.
-      const Vec3T<S>& far = ws.vertices[neighbour.v[(k + 2) % 3]].w;
-      if (created.n.dot(far) - created.d > flat_tol) {
-        valid = false;
-        break;
-      }
+      ws.created.push_back(c);
+      EpaFace<S>& created = ws.faces[c];
       created.adj[0] = g;
       created.adj_edge[0] = k;
-      ws.created.push_back(static_cast<int>(ws.faces.size()));
-      ws.faces.push_back(created);
+      // Convexity across the horizon edge: the neighbour's far vertex is below the new face.
+      if (created.n.dot(ws.vertices[far].w) - created.d > flat_tol) {
+        valid = false;
+        break;
+      }
     }
     // The horizon must be one simple loop: each new face's edge 1 (to -> w) meets exactly one
     // other new face's edge 2 (w -> from).
