@@ -455,23 +455,52 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     }
   }
 
-  // 3. The answer from the nearest face: the origin's projection d n in barycentric coordinates.
+  // 3. Witness points: the origin's projection p = d n in barycentric coordinates. p lies in the
+  // facet of A - B that the nearest face belongs to, but that facet may be split into several
+  // coplanar faces of P (a box face, or the parallelogram of an edge of A and an edge of B, is two
+  // triangles) and the heap may have surfaced a coplanar neighbour of the face holding p. So take,
+  // among the faces coplanar with the nearest one, the one whose coordinates of p are least
+  // negative; depth and normal stay those of the nearest face.
   const EpaFace<S>& face = ws.faces[best];
   const Vec3T<S> p = face.n * face.d;
+  auto coordinates = [&](const EpaFace<S>& f, S lambda[3]) {
+    const Vec3T<S>& w0 = ws.vertices[f.v[0]].w;
+    const S area = face.n.dot((ws.vertices[f.v[1]].w - w0).cross(ws.vertices[f.v[2]].w - w0));
+    if (!(area > S(0))) return -std::numeric_limits<S>::infinity();
+    S least = std::numeric_limits<S>::infinity();
+    for (int k = 0; k < 3; ++k) {
+      const Vec3T<S>& q = ws.vertices[f.v[(k + 1) % 3]].w;
+      const Vec3T<S>& r = ws.vertices[f.v[(k + 2) % 3]].w;
+      lambda[k] = face.n.dot((q - p).cross(r - p)) / area;
+      least = std::min(least, lambda[k]);
+    }
+    return least;
+  };
   S lambda[3];
-  S total = S(0);
-  for (int k = 0; k < 3; ++k) {
-    const Vec3T<S>& q = ws.vertices[face.v[(k + 1) % 3]].w;
-    const Vec3T<S>& r = ws.vertices[face.v[(k + 2) % 3]].w;
-    lambda[k] = std::max(S(0), face.n.dot((q - p).cross(r - p)));
-    total += lambda[k];
+  int holder = best;
+  S score = coordinates(face, lambda);
+  constexpr S kCoplanar = S(1) - S(1e-8);  // cosine of the angle between coplanar normals
+  if (!(score >= S(0))) {
+    for (int g = 0; g < static_cast<int>(ws.faces.size()); ++g) {
+      if (g == best || !ws.faces[g].live || ws.faces[g].n.dot(face.n) < kCoplanar) continue;
+      S trial[3];
+      const S trial_score = coordinates(ws.faces[g], trial);
+      if (trial_score > score) {
+        score = trial_score;
+        holder = g;
+        for (int k = 0; k < 3; ++k) lambda[k] = trial[k];
+      }
+    }
   }
+  if (!(score > -std::numeric_limits<S>::infinity())) lambda[0] = lambda[1] = lambda[2] = S(1);
+  S total = S(0);
+  for (int k = 0; k < 3; ++k) total += (lambda[k] = std::max(S(0), lambda[k]));
   out.a = Vec3T<S>::Zero();
   out.b = Vec3T<S>::Zero();
   for (int k = 0; k < 3; ++k) {
     const S weight = total > S(0) ? lambda[k] / total : S(1) / S(3);
-    out.a += weight * ws.vertices[face.v[k]].a;
-    out.b += weight * ws.vertices[face.v[k]].b;
+    out.a += weight * ws.vertices[ws.faces[holder].v[k]].a;
+    out.b += weight * ws.vertices[ws.faces[holder].v[k]].b;
   }
   out.normal = face.n;
   out.depth = face.d;
