@@ -184,8 +184,8 @@ Case make_case(const std::string& family, ShapeKind ka, ShapeKind kb, int n, boo
     c.pairs.push_back(p);
   }
   c.reference.assign(c.pairs.size(), 0.0L);
-  if (!intersecting)
-    for (std::size_t i = 0; i < c.pairs.size(); ++i) c.reference[i] = reference_distance(c, i);
+  for (std::size_t i = 0; i < c.pairs.size(); ++i)
+    c.reference[i] = intersecting ? reference_depth(c, i) : reference_distance(c, i);
   return c;
 }
 

@@ -48,7 +48,8 @@ struct Case {
   std::vector<ShapeDesc> shapes_a;
   std::vector<ShapeDesc> shapes_b;
   std::vector<PairPose> pairs;
-  /// Separated cases: the reference distance of each pair; intersecting cases: 0.
+  /// The reference answer of each pair (reference.hpp): separated cases, the distance;
+  /// intersecting cases, the penetration depth.
   std::vector<long double> reference;
 
   std::string name() const { return family + (intersecting ? "/overlap" : "/separated"); }

@@ -3,9 +3,10 @@
 
 Usage: report.py result.json [more.json ...] > results.md
 
-Benchmark names are <query>/<family>/<set>/<method>. Times are the median over repetitions of
-the CPU time per query (ns); CPU time rather than wall time because the benchmark machine may be
-shared. The ratio is fastest peer / mink, so > 1 means mink is faster.
+Benchmark names are <query>/<family>/<set>/<method>, query being intersect, distance or contact.
+Times are the median over repetitions of the CPU time per query (ns); CPU time rather than wall
+time because the benchmark machine may be shared. The ratio is fastest peer / mink, so > 1 means
+mink is faster.
 """
 import json
 import math
@@ -14,12 +15,23 @@ from collections import OrderedDict
 
 PEERS = ["ccd_gjk", "ccd_mpr", "fcl_ccd", "fcl_indep", "bullet64_pd", "bullet64_epa2",
          "bullet32_pd", "bullet32_epa2"]
-TARGET = {"intersect": 2.0, "distance": 1.5}
+TARGET = {"intersect": 2.0, "distance": 1.5, "contact": 2.0}
 MAX_REL_ERR = 1e-10
-# Cells where FCL does not run GJK but dedicated primitive code (see bench/peers/fcl_adapter.cpp).
+# Contact: the bar on the depth (distance) error and on the normal's optimality gap, both
+# relative to the sum of the bounding radii.
+CONTACT_MAX_REL_ERR = 1e-9
+# Cells where FCL does not run GJK but dedicated primitive code (see bench/peers/fcl_adapter.cpp),
+# keyed by family or by family/set.
 NOT_GJK = {("intersect", "box-box", "fcl_ccd"), ("intersect", "box-box", "fcl_indep"),
            ("distance", "capsule-capsule", "fcl_ccd"),
-           ("distance", "capsule-capsule", "fcl_indep")}
+           ("distance", "capsule-capsule", "fcl_indep"),
+           ("contact", "box-box/overlap", "fcl_indep"),
+           ("contact", "capsule-capsule", "fcl_indep")}
+COUNTERS = ("wrong", "max_rel_err", "normal_err", "point_err", "iterations", "threw")
+
+
+def not_gjk(query, case, method):
+    return ((query, case.split("/")[0], method) in NOT_GJK or (query, case, method) in NOT_GJK)
 
 
 def load(paths):
@@ -43,7 +55,7 @@ def load(paths):
                     entry["median"] = b["cpu_time"] * scale
                 continue
             entry["times"].append(b["cpu_time"] * scale)
-            for c in ("wrong", "max_rel_err", "iterations"):
+            for c in COUNTERS:
                 if c in b:
                     entry["counters"][c] = b[c]
     for entry in runs.values():
@@ -70,9 +82,25 @@ def fmt_err(counters, case):
     return f"{wrong} wrong"
 
 
+def fmt_num(e):
+    return "inf" if math.isinf(e) else ("0" if e == 0 else f"{e:.0e}")
+
+
+def fmt_contact(counters, key="max_rel_err", with_wrong=True):
+    """A contact error counter, with the wrong answers when asked."""
+    if not counters or key not in counters:
+        return "–"
+    s = fmt_num(max(0.0, counters[key]))
+    wrong = int(round(counters.get("wrong", 0)))
+    return s + (f" ({wrong} wrong)" if with_wrong and wrong else "")
+
+
 def accurate(query, case, counters):
     if not counters or counters.get("wrong", 0) > 0:
         return False
+    if query == "contact":
+        return (counters.get("max_rel_err", math.inf) <= CONTACT_MAX_REL_ERR and
+                counters.get("normal_err", math.inf) <= CONTACT_MAX_REL_ERR)
     if query == "distance" and case.endswith("/separated"):
         return counters.get("max_rel_err", math.inf) <= MAX_REL_ERR
     return True
@@ -82,9 +110,12 @@ def table(query, runs):
     cases = list(OrderedDict.fromkeys(k[1] for k in runs if k[0] == query))
     methods = [m for m in PEERS if any(k[0] == query and k[2] == m for k in runs)]
     lines = []
+    contact = query == "contact"
     head = ["case", "mink ns"] + [m for m in methods] + [
         "fastest peer", "ratio", "target", "fastest accurate peer", "ratio vs accurate",
-        "mink iters", "mink error", "fastest peer error"]
+        "mink iters"]
+    head += (["mink depth err", "mink normal err", "mink points err", "fastest peer depth err",
+              "fastest peer normal err"] if contact else ["mink error", "fastest peer error"])
     lines.append("| " + " | ".join(head) + " |")
     lines.append("|" + "|".join(["---"] + ["---:"] * (len(head) - 1)) + "|")
     misses = []
@@ -97,7 +128,7 @@ def table(query, runs):
         for m in methods:
             e = runs.get((query, case, m))
             t = e.get("median") if e else None
-            mark = "†" if (query, case.split("/")[0], m) in NOT_GJK else ""
+            mark = "†" if not_gjk(query, case, m) else ""
             row.append(fmt_time(t) + mark if e and "error" not in e else ("err" if e else "–"))
             if t is not None and (best is None or t < best[1]):
                 best = (m, t)
@@ -114,10 +145,15 @@ def table(query, runs):
                 "met" if ok else "**missed**",
                 best_accurate[0] if best_accurate else "none",
                 f"{ratio_accurate:.2f}" if ratio_accurate else "–",
-                f"{mink.get('counters', {}).get('iterations', float('nan')):.2f}",
-                fmt_err(mink.get("counters"), case),
-                fmt_err(runs.get((query, case, best[0]), {}).get("counters") if best else None,
-                        case)]
+                f"{mink.get('counters', {}).get('iterations', float('nan')):.2f}"]
+        peer = runs.get((query, case, best[0]), {}).get("counters") if best else None
+        if contact:
+            mc = mink.get("counters")
+            row += [fmt_contact(mc), fmt_contact(mc, "normal_err", False),
+                    fmt_contact(mc, "point_err", False), fmt_contact(peer),
+                    fmt_contact(peer, "normal_err", False)]
+        else:
+            row += [fmt_err(mink.get("counters"), case), fmt_err(peer, case)]
         lines.append("| " + " | ".join(row) + " |")
     return "\n".join(lines), misses
 
@@ -133,9 +169,39 @@ def accuracy_table(query, runs):
     return "\n".join(lines)
 
 
+def contact_accuracy_table(runs, key):
+    """Per library: the depth (distance) error and the normal's gap, or the points' error."""
+    query = "contact"
+    cases = list(OrderedDict.fromkeys(k[1] for k in runs if k[0] == query))
+    methods = ["mink"] + [m for m in PEERS if any(k[0] == query and k[2] == m for k in runs)]
+    lines = ["| case | " + " | ".join(methods) + " |",
+             "|---|" + "|".join(["---:"] * len(methods)) + "|"]
+    for case in cases:
+        cells = []
+        for m in methods:
+            e = runs.get((query, case, m))
+            if not e:
+                cells.append("–")
+            elif "error" in e:
+                cells.append("err")
+            elif key == "point_err":
+                cells.append(fmt_contact(e["counters"], "point_err", False))
+            else:
+                c = e["counters"]
+                cell = (fmt_contact(c, "max_rel_err", False) + " / " +
+                        fmt_contact(c, "normal_err", False))
+                wrong = int(round(c.get("wrong", 0)))
+                threw = int(round(c.get("threw", 0)))
+                if wrong:
+                    cell += f" ({wrong} wrong" + (f", {threw} threw" if threw else "") + ")"
+                cells.append(cell)
+        lines.append(f"| {case} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
 def main():
     runs, context = load(sys.argv[1:])
-    out = ["# mink vs peers: boolean intersection and distance", ""]
+    out = ["# mink vs peers: boolean intersection, distance and contact", ""]
     if context:
         out.append(f"Host: {context.get('host_name', '?')}, {context.get('num_cpus', '?')} CPUs "
                    f"at {context.get('mhz_per_cpu', '?')} MHz, load average "
@@ -150,16 +216,57 @@ def main():
             "is the fastest peer that itself meets the accuracy bar on that row. Errors: max |d - "
             "reference| / (sum of bounding radii) on separated cases; 'wrong' counts answers "
             "with the wrong intersect/separated verdict.", ""]
+    present = {k[0] for k in runs}  # the queries run (a --benchmark_filter may leave some out)
     all_misses = {}
     for query, title in (("intersect", "Boolean intersection"), ("distance", "Distance")):
+        if query not in present:
+            continue
         t, misses = table(query, runs)
         all_misses[query] = misses
         out += [f"## {title}", "", t, ""]
+    if "contact" in present:
+        t, misses = table("contact", runs)
+        all_misses["contact"] = misses
+        out += ["## Contact (penetration)", "",
+                "The full answer: verdict, penetration depth (overlap rows) or distance "
+                "(separated rows), unit normal and the two deepest (closest) points, each library "
+                "converted to mink's conventions (normal from A to B: the direction B must move to "
+                "separate). mink: mink::contact. libccd: ccdGJKPenetration (ccd_gjk) and "
+                "ccdMPRPenetration (ccd_mpr), overlap rows only (no distance). FCL: signed "
+                "distance (fcl_ccd: GJKSolver_libccd::shapeSignedDistance, GJK + EPA) and "
+                "GJKSolver_indep's distance then, when overlapping, its intersection with a "
+                "contact (fcl_indep). Bullet: btGjkEpaSolver2::Distance then Penetration "
+                "(bullet64_epa2, bullet32_epa2). Peers at their default tolerances. Target: >= 2x "
+                "the fastest peer with depth (distance) error and normal gap <= "
+                f"{CONTACT_MAX_REL_ERR:.0e} and no wrong answer. Depth err: max |depth - "
+                "reference| / size (distance error on separated rows), against an exact long "
+                "double reference (bench/reference.cpp). Normal err: max (h_A(n) + h_B(-n) - "
+                "reference depth) / size, h the support function: 0 for an optimal normal. Points "
+                "err: max offset of a point from its shape's support plane along the normal, "
+                "distance outside its shape, or mismatch |point_b - point_a + depth * normal|, "
+                "over size (reported, not part of the bar). Wrong: verdict wrong, no answer, "
+                "non-finite, or depth or normal error > 1e-6. libccd and FCL's GJKSolver_indep "
+                "give one position, not two points: we take it as the midpoint.", "", t, ""]
     for query, title in (("intersect", "Boolean intersection"), ("distance", "Distance")):
-        out += [f"## Accuracy per library: {title.lower()}", "", accuracy_table(query, runs), ""]
+        if query in present:
+            out += [f"## Accuracy per library: {title.lower()}", "", accuracy_table(query, runs),
+                    ""]
+    if "contact" in present:
+        out += ["## Accuracy per library: contact", "",
+                "Depth (distance) error / normal gap, relative to size; wrong answers (and "
+                "exceptions) in brackets. Errors are maxima over the answers given.", "",
+                contact_accuracy_table(runs, "max_rel_err"), "",
+                "## Points error per library: contact", "",
+                contact_accuracy_table(runs, "point_err"), ""]
     out += ["## Targets missed", ""]
     for query, misses in all_misses.items():
         out.append(f"- {query}: " + (", ".join(misses) if misses else "none"))
+    bad_points = [k[1] for k, e in runs.items()
+                  if k[0] == "contact" and k[2] == "mink" and
+                  e["counters"].get("point_err", 0) > CONTACT_MAX_REL_ERR]
+    if bad_points:
+        out.append("- contact, mink's points off by more than "
+                   f"{CONTACT_MAX_REL_ERR:.0e} of size: " + ", ".join(bad_points))
     print("\n".join(out))
 
 

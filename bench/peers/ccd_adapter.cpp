@@ -1,7 +1,17 @@
-// libccd 2.1 (Debian, double build): ccdGJKIntersect and ccdMPRIntersect. libccd has no distance
-// query (its dist_tolerance field is unused upstream; FCL's copy adds one, benchmarked as
-// fcl_ccd). libccd has no shapes either: the support and centre callbacks below are ours, in the
-// world frame, each shape with its pose baked in when the object is built (outside the timing).
+// libccd 2.1 (Debian, double build): ccdGJKIntersect and ccdMPRIntersect, and for penetrating
+// pairs ccdGJKPenetration (GJK then EPA) and ccdMPRPenetration. libccd has no distance query (its
+// dist_tolerance field is unused upstream; FCL's copy adds one, benchmarked as fcl_ccd), so it has
+// no full answer for separated pairs. libccd has no shapes either: the support and centre
+// callbacks below are ours, in the world frame, each shape with its pose baked in when the object
+// is built (outside the timing).
+//
+// Penetration output: depth, a unit direction `dir` and one position `pos`. libccd documents that
+// translating obj2 by depth along dir leaves the shapes touching: dir is mink's normal as it is.
+// libccd gives no pair of points, only `pos` ("where the force should take place"): MPR takes the
+// midpoint of the two witness points, GJK+EPA the mean of the witness points of the EPA
+// polytope's vertices nearest the origin. We report point_a = pos + depth/2 * dir and point_b =
+// pos - depth/2 * dir, which are the deepest points when pos is the midpoint of the deepest points;
+// the points' error column says how far that is from true.
 #include <ccd/ccd.h>
 
 #include <cmath>
@@ -108,6 +118,22 @@ class CcdQueries final : public PairQueries {
                  : ccdGJKIntersect(&a_[i], &b_[i], &ccd_)) != 0;
   }
   double distance(std::size_t) const override { throw std::logic_error("libccd has no distance"); }
+  ContactAnswer contact(std::size_t i) const override {
+    ccd_real_t depth = 0;
+    ccd_vec3_t dir, pos;
+    const int r = mpr_ ? ccdMPRPenetration(&a_[i], &b_[i], &ccd_, &depth, &dir, &pos)
+                       : ccdGJKPenetration(&a_[i], &b_[i], &ccd_, &depth, &dir, &pos);
+    if (r == -2) throw std::runtime_error("ccdGJKPenetration: out of memory");
+    ContactAnswer out;
+    out.intersect = r == 0;
+    if (!out.intersect) return out;  // separated, but no distance
+    out.depth = depth;
+    out.normal = {dir.v[0], dir.v[1], dir.v[2]};
+    const Eigen::Vector3d mid(pos.v[0], pos.v[1], pos.v[2]);
+    out.point_a = mid + 0.5 * depth * out.normal;
+    out.point_b = mid - 0.5 * depth * out.normal;
+    return out;
+  }
 
  private:
   static CcdObject make(const ShapeDesc& s, const std::vector<double>& xyz,
@@ -137,8 +163,8 @@ class CcdQueries final : public PairQueries {
 
 std::vector<Method> make_ccd_methods(const Case& c) {
   std::vector<Method> m;
-  m.push_back({"ccd_gjk", true, false, std::make_unique<CcdQueries>(c, false)});
-  m.push_back({"ccd_mpr", true, false, std::make_unique<CcdQueries>(c, true)});
+  m.push_back({"ccd_gjk", true, false, std::make_unique<CcdQueries>(c, false), true, false});
+  m.push_back({"ccd_mpr", true, false, std::make_unique<CcdQueries>(c, true), true, false});
   return m;
 }
 
