@@ -40,9 +40,15 @@ struct EpaFace {
   int v[3];         ///< vertex indices, counter-clockwise seen from outside P
   int adj[3];       ///< face across edge i (from v[i] to v[(i + 1) % 3])
   int adj_edge[3];  ///< index of that edge in the neighbour
-  Vec3T<S> n;       ///< unit outward normal
-  S d;              ///< signed distance of the origin below the face's plane: n . v[0]
+  Vec3T<S> n;       ///< outward normal, not normalised (the square root waits until needed)
+  S nn;             ///< |n|^2
+  S offset;         ///< n . v[0]: the plane is n . x = offset
+  S key;            ///< signed squared distance of the origin below the plane, d |d|, for order
   bool live;
+
+  /// Signed distance of the origin below the face's plane (> 0: the origin is inside).
+  S distance() const { return offset / std::sqrt(nn); }
+  Vec3T<S> unit_normal() const { return n / std::sqrt(nn); }
 };
 
 /// Scratch memory of one EPA run, kept per thread so that queries do not allocate once warm.
@@ -73,7 +79,7 @@ struct EpaWorkspace {
   }
 
   void enqueue(int face) {
-    queue.push_back({faces[face].d, face});
+    queue.push_back({faces[face].key, face});
     std::push_heap(queue.begin(), queue.end());
   }
 
@@ -127,15 +133,19 @@ int make_epa_face(EpaWorkspace<S>& ws, int i, int j, int k) {
   const Vec3T<S>& p = ws.vertices[i].w;
   const Vec3T<S>& q = ws.vertices[j].w;
   const Vec3T<S>& r = ws.vertices[k].w;
-  Vec3T<S> n;
-  if (!triangle_normal(p, q, r, n)) return -1;
+  const Vec3T<S> e1 = q - p, e2 = r - p;
+  const Vec3T<S> n = e1.cross(e2);
+  const S nn = n.squaredNorm();
+  if (!(nn > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm()) || !(nn > S(0))) return -1;
   EpaFace<S>& face = ws.faces.emplace_back();
   face.n = n;
+  face.nn = nn;
   face.v[0] = i;
   face.v[1] = j;
   face.v[2] = k;
   // The plane's offset from all three vertices: less sensitive to which one is farthest.
-  face.d = (n.dot(p) + n.dot(q) + n.dot(r)) / S(3);
+  face.offset = n.dot(p + q + r) / S(3);
+  face.key = face.offset * std::abs(face.offset) / nn;
   face.live = true;
   for (int e = 0; e < 3; ++e) face.adj[e] = face.adj_edge[e] = -1;
   return static_cast<int>(ws.faces.size()) - 1;
@@ -362,13 +372,15 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       break;
     }
     const SimplexVertexT<S> w = support(face.n);
-    const S h = face.n.dot(w.w);
+    const S length = std::sqrt(face.nn);
+    const S h = face.n.dot(w.w) / length;
+    const S face_distance = face.offset / length;
     if (!(std::abs(h) <= std::numeric_limits<S>::max())) {
       out.status = Status::InvalidInput;
       return out;
     }
     upper = std::min(upper, h);
-    if (h - face.d <= gain_tol) break;  // the face lies on the boundary of A - B
+    if (h - face_distance <= gain_tol) break;  // the face lies on the boundary of A - B
     bool repeated = false;
     for (int k = 0; k < 3; ++k) repeated |= ws.vertices[face.v[k]].w == w.w;
     if (repeated) break;
@@ -388,7 +400,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       for (int e = 0; e < 3; ++e) {
         const int g = ws.faces[f].adj[e];
         if (!ws.faces[g].live) continue;
-        if (ws.faces[g].n.dot(w.w) - ws.faces[g].d > S(0)) {
+        if (ws.faces[g].n.dot(w.w) - ws.faces[g].offset > S(0)) {
           ws.faces[g].live = false;
           ws.removed.push_back(g);
           ws.stack.push_back(g);
@@ -414,7 +426,8 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       created.adj[0] = g;
       created.adj_edge[0] = k;
       // Convexity across the horizon edge: the neighbour's far vertex is below the new face.
-      if (created.n.dot(ws.vertices[far].w) - created.d > flat_tol) {
+      const S above = created.n.dot(ws.vertices[far].w) - created.offset;
+      if (above > S(0) && above * above > flat_tol * flat_tol * created.nn) {
         valid = false;
         break;
       }
@@ -461,29 +474,32 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   // triangles) and the heap may have surfaced a coplanar neighbour of the face holding p. So take,
   // among the faces coplanar with the nearest one, the one whose coordinates of p are least
   // negative; depth and normal stay those of the nearest face.
-  const EpaFace<S>& face = ws.faces[best];
-  const Vec3T<S> p = face.n * face.d;
+  const Vec3T<S> normal = ws.faces[best].unit_normal();
+  const S depth = ws.faces[best].distance();
+  const Vec3T<S> p = normal * depth;
   auto coordinates = [&](const EpaFace<S>& f, S lambda[3]) {
     const Vec3T<S>& w0 = ws.vertices[f.v[0]].w;
-    const S area = face.n.dot((ws.vertices[f.v[1]].w - w0).cross(ws.vertices[f.v[2]].w - w0));
+    const S area = normal.dot((ws.vertices[f.v[1]].w - w0).cross(ws.vertices[f.v[2]].w - w0));
     if (!(area > S(0))) return -std::numeric_limits<S>::infinity();
     S least = std::numeric_limits<S>::infinity();
     for (int k = 0; k < 3; ++k) {
       const Vec3T<S>& q = ws.vertices[f.v[(k + 1) % 3]].w;
       const Vec3T<S>& r = ws.vertices[f.v[(k + 2) % 3]].w;
-      lambda[k] = face.n.dot((q - p).cross(r - p)) / area;
+      lambda[k] = normal.dot((q - p).cross(r - p)) / area;
       least = std::min(least, lambda[k]);
     }
     return least;
   };
-  S lambda[3];
+  S lambda[3] = {S(1), S(1), S(1)};
   int holder = best;
-  S score = coordinates(face, lambda);
+  S score = coordinates(ws.faces[best], lambda);
   constexpr S kCoplanar = S(1) - S(1e-8);  // cosine of the angle between coplanar normals
   if (!(score >= S(0))) {
     for (int g = 0; g < static_cast<int>(ws.faces.size()); ++g) {
-      if (g == best || !ws.faces[g].live || ws.faces[g].n.dot(face.n) < kCoplanar) continue;
-      S trial[3];
+      if (g == best || !ws.faces[g].live ||
+          ws.faces[g].n.dot(normal) < kCoplanar * std::sqrt(ws.faces[g].nn))
+        continue;
+      S trial[3] = {S(0), S(0), S(0)};
       const S trial_score = coordinates(ws.faces[g], trial);
       if (trial_score > score) {
         score = trial_score;
@@ -502,9 +518,9 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     out.a += weight * ws.vertices[ws.faces[holder].v[k]].a;
     out.b += weight * ws.vertices[ws.faces[holder].v[k]].b;
   }
-  out.normal = face.n;
-  out.depth = face.d;
-  out.upper = std::max(face.d, upper);
+  out.normal = normal;
+  out.depth = depth;
+  out.upper = std::max(depth, upper);
   return out;
 }
 
