@@ -12,4 +12,9 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/property/gjk_property_static_b_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/property/gjk_property_static_c_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/property/gjk_property_runtime_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/oracle/penetration_self_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_analytic_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_brute_force_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_property_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_nasty_test.cpp
 )

@@ -61,7 +61,11 @@ namespace detail {
 template <class S>
 void contact_from_cores(const Vec3T<S>& on_a, const Vec3T<S>& on_b, S core_distance, S radius_a,
                         S radius_b, S inside, const PoseT<S>& pose_a, ContactResultT<S>& result) {
-  const Vec3T<S> normal = (on_b - on_a) / core_distance;
+  // Normalised by its own length: GJK's |v| can differ from |on_b - on_a| by rounding of the
+  // weights, and the normal must be unit.
+  const Vec3T<S> offset = on_b - on_a;
+  const S length = offset.norm();
+  const Vec3T<S> normal = length > S(0) ? Vec3T<S>(offset / length) : Vec3T<S>::UnitZ();
   const S radius = radius_a + radius_b;
   result.intersect = core_distance <= inside;
   result.distance = result.intersect ? S(0) : core_distance - radius;
@@ -115,8 +119,8 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.error = detail::kOverflowError;
     return result;
   }
-  if (gjk.upper > touch) {
-    // The cores are apart: separated, or penetrating by the radii only.
+  auto cores_apart = [&] {
+    // Separated, or penetrating by the radii only.
     Vec3T<S> on_a = Vec3T<S>::Zero(), on_b = Vec3T<S>::Zero();
     for (int i = 0; i < gjk.simplex.size; ++i) {
       on_a += gjk.simplex.weights[i] * gjk.simplex.vertices[i].a;
@@ -128,8 +132,12 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
                         ? Status::IterationLimit
                         : (result.intersect ? Status::Intersecting : Status::Separated);
     return result;
-  }
-  // The cores meet: EPA on the cores, then add the radii.
+  };
+  // GJK proves the cores apart only with a separating plane (lower bound > touch). Without one
+  // (a point inside a needle 1e-7 as thick as it is long: GJK's simplex there is too thin to
+  // enclose the origin), EPA decides.
+  if (gjk.upper > touch && gjk.lower > touch) return cores_apart();
+  // The cores meet (or may): EPA on the cores, then add the radii.
   const S centres = diff.translation.norm();
   const Vec3T<S> fallback =
       centres > S(0) ? Vec3T<S>(diff.translation / centres) : Vec3T<S>::UnitZ();
@@ -139,6 +147,9 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.error = detail::kOverflowError;
     return result;
   }
+  // A direction n with support value h(n) < -touch proves A - B lies beyond the origin: the cores
+  // are apart after all, and GJK's closest points are the answer.
+  if (gjk.upper > touch && epa.upper < -touch) return cores_apart();
   const Vec3T<S>& n = epa.normal;
   result.intersect = true;
   result.depth = std::max(S(0), epa.depth) + radius_a + radius_b;

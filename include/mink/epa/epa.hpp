@@ -13,10 +13,10 @@
 ///
 /// Robustness, in the order the failures show up in other libraries:
 ///   - GJK often ends with fewer than 4 points (touching, flat or needle shapes). The seed grows
-///     the simplex with support points along directions orthogonal to it, into a tetrahedron or a
-///     double pyramid around the last triangle; when no direction leaves a plane, a line or a
-///     point, A - B is flat there, the core depth is 0 and the normal is a direction of that
-///     degenerate set (the choice is documented in contact.hpp).
+///     the simplex with support points along directions orthogonal to it into a tetrahedron;
+///     when no direction leaves a plane, a line or a point, A - B is flat there, the core depth is
+///     0 and the normal is a direction of that degenerate set (the choice is documented in
+///     contact.hpp).
 ///   - Face distances are signed, so an origin on the boundary of P, or just outside it (touching
 ///     within tolerance), needs no special case: the face it lies beyond has d <= 0 and is pushed
 ///     out first.
@@ -63,6 +63,7 @@ struct EpaWorkspace {
   };
   std::vector<Horizon> horizon;
   std::vector<int> created;
+  std::vector<int> forced;  ///< faces taken into the visible region to keep P convex
   /// Live faces by distance, nearest on top (a min-heap; removed faces are skipped when they
   /// surface).
   struct Queued {
@@ -112,6 +113,9 @@ struct EpaOutcome {
   int iterations = 0;                   ///< support calls
   bool degenerate = false;  ///< A - B is flat, a segment or a point: the normal was chosen
 };
+
+/// Tries per expansion before EPA gives up on keeping P convex and stops with its bracket.
+inline constexpr int kMaxExpansionAttempts = 8;
 
 /// Unit normal of the triangle (p, q, r), counter-clockwise; false when it has no area to
 /// rounding.
@@ -176,27 +180,28 @@ void link_faces(EpaWorkspace<S>& ws, const int* ids, int count) {
   }
 }
 
-/// Builds P as the hull of 4 or 5 points in general position (a tetrahedron, or a double pyramid
-/// over the triangle 0-1-2 with apexes 3 and 4 on opposite sides). Returns false on degeneracy.
+/// Builds P as the tetrahedron of the 4 points of the workspace. Returns false on degeneracy.
 template <class S>
 bool seed_polytope(EpaWorkspace<S>& ws) {
-  const int n = static_cast<int>(ws.vertices.size());
-  static constexpr int kTetra[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
-  static constexpr int kDouble[6][3] = {{0, 1, 3}, {1, 2, 3}, {2, 0, 3},
-                                        {1, 0, 4}, {2, 1, 4}, {0, 2, 4}};
-  const int(*table)[3] = n == 4 ? kTetra : kDouble;
-  const int count = n == 4 ? 4 : 6;
-  // Orient by an interior point: the centroid of the vertices.
-  Vec3T<S> centre = Vec3T<S>::Zero();
-  for (const auto& vertex : ws.vertices) centre += vertex.w;
-  centre /= S(n);
-  int ids[6];
+  static constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
+  constexpr int count = 4;
+  // Orient all faces by one decision, the sign of the volume: testing each face against the
+  // centroid is unreliable on a sliver (a needle 1e-9 thick), where rounding of a face normal
+  // moves it by more than the centroid's distance to the face, and one flipped face breaks the
+  // mesh.
+  // The volume in long double: on such a sliver it is ~1e-17 while double rounding of the triple
+  // product is ~1e-16 (the seed's vertices are 1e-12 of the size off each other's planes at
+  // least, which long double resolves).
+  using Wide = long double;
+  const Vec3T<Wide> w0 = ws.vertices[0].w.template cast<Wide>();
+  const Wide volume = (ws.vertices[1].w.template cast<Wide>() - w0)
+                          .dot((ws.vertices[2].w.template cast<Wide>() - w0)
+                                   .cross(ws.vertices[3].w.template cast<Wide>() - w0));
+  const bool flip = volume > Wide(0);  // then (0, 1, 2) faces vertex 3: inwards
+  int ids[count];
   for (int f = 0; f < count; ++f) {
-    int i = table[f][0], j = table[f][1], k = table[f][2];
-    Vec3T<S> normal;
-    if (!triangle_normal(ws.vertices[i].w, ws.vertices[j].w, ws.vertices[k].w, normal))
-      return false;
-    if (normal.dot(ws.vertices[i].w - centre) < S(0)) std::swap(j, k);
+    int i = kFaces[f][0], j = kFaces[f][1], k = kFaces[f][2];
+    if (flip) std::swap(j, k);
     if ((ids[f] = make_epa_face(ws, i, j, k)) < 0) return false;
   }
   link_faces(ws, ids, count);
@@ -354,10 +359,11 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       // A - B is flat: the side with the smaller support value is the better normal.
       return degenerate(n.dot(up.w) <= -n.dot(down.w) ? n : Vec3T<S>(-n));
     }
-    // A tetrahedron, or a double pyramid when A - B extends to both sides of the triangle (the
-    // origin may lie on either side of it).
-    if (rise > flat_tol) ws.vertices.push_back(up);
-    if (fall > flat_tol) ws.vertices.push_back(down);
+    // A tetrahedron with the farther apex. The origin lies within the touching tolerance of the
+    // triangle, so it may sit just outside it, on the other side: signed face distances make the
+    // first expansion push that face out towards the other apex. (A double pyramid with both
+    // apexes is not convex when the segment between them misses the triangle.)
+    ws.vertices.push_back(rise >= fall ? up : down);
   }
   if (!seed_polytope(ws)) return degenerate(fallback);
 
@@ -385,57 +391,66 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     for (int k = 0; k < 3; ++k) repeated |= ws.vertices[face.v[k]].w == w.w;
     if (repeated) break;
 
-    // Faces visible from w: a connected region grown from the nearest face.
+    // Faces visible from w: a connected region grown from the nearest face. A neighbour that
+    // w does not see but that would meet the new faces at a reflex angle (w lies within rounding
+    // of its plane, on a curved core near convergence) is added to the region and the expansion
+    // tried again; only if that does not help is the expansion given up.
     const int wi = static_cast<int>(ws.vertices.size());
     ws.vertices.push_back(w);
-    ws.removed.clear();
-    ws.horizon.clear();
-    ws.stack.clear();
-    ws.faces[best].live = false;
-    ws.removed.push_back(best);
-    ws.stack.push_back(best);
-    while (!ws.stack.empty()) {
-      const int f = ws.stack.back();
-      ws.stack.pop_back();
-      for (int e = 0; e < 3; ++e) {
-        const int g = ws.faces[f].adj[e];
-        if (!ws.faces[g].live) continue;
-        if (ws.faces[g].n.dot(w.w) - ws.faces[g].offset > S(0)) {
-          ws.faces[g].live = false;
-          ws.removed.push_back(g);
-          ws.stack.push_back(g);
-        } else {
-          ws.horizon.push_back({g, ws.faces[f].adj_edge[e]});
+    ws.forced.clear();
+    bool valid = false;
+    for (int attempt = 0; attempt < kMaxExpansionAttempts; ++attempt) {
+      ws.removed.clear();
+      ws.horizon.clear();
+      ws.stack.clear();
+      ws.faces[best].live = false;
+      ws.removed.push_back(best);
+      ws.stack.push_back(best);
+      while (!ws.stack.empty()) {
+        const int f = ws.stack.back();
+        ws.stack.pop_back();
+        for (int e = 0; e < 3; ++e) {
+          const int g = ws.faces[f].adj[e];
+          if (!ws.faces[g].live) continue;
+          const bool forced = std::find(ws.forced.begin(), ws.forced.end(), g) != ws.forced.end();
+          if (forced || ws.faces[g].n.dot(w.w) - ws.faces[g].offset > S(0)) {
+            ws.faces[g].live = false;
+            ws.removed.push_back(g);
+            ws.stack.push_back(g);
+          } else {
+            ws.horizon.push_back({g, ws.faces[f].adj_edge[e]});
+          }
         }
       }
-    }
-    // New faces over the horizon, checked before anything is linked.
-    bool valid = ws.horizon.size() >= 3;
-    ws.created.clear();
-    for (std::size_t h_i = 0; valid && h_i < ws.horizon.size(); ++h_i) {
-      const auto [g, k] = ws.horizon[h_i];
-      const int from = ws.faces[g].v[(k + 1) % 3], to = ws.faces[g].v[k];
-      const int far = ws.faces[g].v[(k + 2) % 3];
-      const int c = make_epa_face(ws, from, to, wi);
-      if (c < 0) {
-        valid = false;
-        break;
+      // New faces over the horizon, checked before anything is linked.
+      valid = ws.horizon.size() >= 3;
+      int reflex = -1;
+      ws.created.clear();
+      for (std::size_t h_i = 0; valid && h_i < ws.horizon.size(); ++h_i) {
+        const auto [g, k] = ws.horizon[h_i];
+        const int from = ws.faces[g].v[(k + 1) % 3], to = ws.faces[g].v[k];
+        const int far = ws.faces[g].v[(k + 2) % 3];
+        const int c = make_epa_face(ws, from, to, wi);
+        if (c < 0) {
+          valid = false;
+          break;
+        }
+        ws.created.push_back(c);
+        EpaFace<S>& created = ws.faces[c];
+        created.adj[0] = g;
+        created.adj_edge[0] = k;
+        // Convexity across the horizon edge: the neighbour's far vertex is below the new face.
+        const S above = created.n.dot(ws.vertices[far].w) - created.offset;
+        if (above > S(0) && above * above > flat_tol * flat_tol * created.nn) {
+          valid = false;
+          reflex = g;
+          break;
+        }
       }
-      ws.created.push_back(c);
-      EpaFace<S>& created = ws.faces[c];
-      created.adj[0] = g;
-      created.adj_edge[0] = k;
-      // Convexity across the horizon edge: the neighbour's far vertex is below the new face.
-      const S above = created.n.dot(ws.vertices[far].w) - created.offset;
-      if (above > S(0) && above * above > flat_tol * flat_tol * created.nn) {
-        valid = false;
-        break;
-      }
-    }
-    // The horizon must be one simple loop: each new face's edge 1 (to -> w) meets exactly one
-    // other new face's edge 2 (w -> from).
-    if (valid) {
-      for (const int c : ws.created) {
+      // The horizon must be one simple loop: each new face's edge 1 (to -> w) meets exactly one
+      // other new face's edge 2 (w -> from).
+      for (std::size_t c_i = 0; valid && c_i < ws.created.size(); ++c_i) {
+        const int c = ws.created[c_i];
         int matches = 0, match = -1;
         for (const int o : ws.created)
           if (o != c && ws.faces[o].v[0] == ws.faces[c].v[1]) {
@@ -451,12 +466,15 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
         ws.faces[match].adj[2] = c;
         ws.faces[match].adj_edge[2] = 1;
       }
+      if (valid) break;
+      // Undo this attempt: drop the new faces, revive the removed ones.
+      ws.faces.resize(ws.faces.size() - ws.created.size());
+      for (const int f : ws.removed) ws.faces[f].live = true;
+      if (reflex < 0) break;
+      ws.forced.push_back(reflex);
     }
     if (!valid) {
-      // Undo: drop the new faces and the vertex, revive the removed faces, stop here.
-      ws.faces.resize(ws.faces.size() - ws.created.size());
-      ws.vertices.pop_back();
-      for (const int f : ws.removed) ws.faces[f].live = true;
+      ws.vertices.pop_back();  // give up: stop with the bracket reached so far
       break;
     }
     for (const int c : ws.created) {
@@ -496,8 +514,11 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   constexpr S kCoplanar = S(1) - S(1e-8);  // cosine of the angle between coplanar normals
   if (!(score >= S(0))) {
     for (int g = 0; g < static_cast<int>(ws.faces.size()); ++g) {
-      if (g == best || !ws.faces[g].live ||
-          ws.faces[g].n.dot(normal) < kCoplanar * std::sqrt(ws.faces[g].nn))
+      if (g == best || !ws.faces[g].live) continue;
+      // Coplanar: the same normal, and a plane through p (within EPA's tolerance).
+      const S length = std::sqrt(ws.faces[g].nn);
+      if (ws.faces[g].n.dot(normal) < kCoplanar * length ||
+          std::abs(ws.faces[g].n.dot(p) - ws.faces[g].offset) > (gain_tol + flat_tol) * length)
         continue;
       S trial[3] = {S(0), S(0), S(0)};
       const S trial_score = coordinates(ws.faces[g], trial);

@@ -230,7 +230,8 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
   if (v_in_set) out.upper = v.norm();
   if (!(out.upper <= std::numeric_limits<S>::max()) && v_in_set) out.status = Status::InvalidInput;
   if (out.status == Status::Separated && out.upper <= inside) out.status = Status::Intersecting;
-  if (out.status == Status::Intersecting) out.lower = S(0);
+  // Cores that meet have distance 0; cores apart but within the radii keep their bounds.
+  if (out.status == Status::Intersecting && !(out.upper > touch)) out.lower = S(0);
   if (cache) {
     cache->size = simplex.size;
     for (int i = 0; i < simplex.size; ++i) cache->directions[i] = simplex.vertices[i].dir;
