@@ -21,7 +21,8 @@ mink_need() {
 }
 
 # What building the library, the tool and the tests needs.
-MINK_BUILD_PACKAGES=(g++ cmake ninja-build libeigen3-dev libsimdjson-dev libcli11-dev libgtest-dev)
+MINK_BUILD_PACKAGES=(g++ cmake ninja-build libeigen3-dev libsimdjson-dev libcli11-dev libgtest-dev
+  libcgal-dev libgmp-dev libmpfr-dev)
 # What the benchmarks add: the peers.
 MINK_BENCH_PACKAGES=(libbenchmark-dev libccd-dev libfcl-dev libbullet-dev python3)
 
