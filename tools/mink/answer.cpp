@@ -74,10 +74,29 @@ const char* status_name(Status status) {
 constexpr std::string_view kNotFinite =
     "the query produced a number that is not finite (a mink bug: please report this line)";
 
-void write_intersect(const Query& query, const AnswerOptions& options, std::string& out) {
-  const auto run = [&] { return intersect(query.a, query.pose_a, query.b, query.pose_b); };
-  const IntersectResult r = run();
+bool all_finite(const IntersectResult&) {
+  return true;
+}
+
+bool all_finite(const DistanceResult& r) {
+  return std::isfinite(r.distance) && std::isfinite(r.error_bound) && is_finite(r.normal) &&
+         is_finite(r.point_a) && is_finite(r.point_b);
+}
+
+bool all_finite(const ContactResult& r) {
+  return std::isfinite(r.distance) && std::isfinite(r.depth) && std::isfinite(r.error_bound) &&
+         is_finite(r.normal) && is_finite(r.point_a) && is_finite(r.point_b);
+}
+
+/// The frame every answer shares: run the query, turn invalid input and non-finite results into
+/// error lines, time it when asked, then the status, the fields `write_fields` adds, the
+/// iteration count, the error bound when the iteration cap was hit, and the time.
+template <class Run, class WriteFields>
+void write_answer_of(const Query& query, const AnswerOptions& options, Run&& run,
+                     WriteFields&& write_fields, std::string& out) {
+  const auto r = run();
   if (r.status == Status::InvalidInput) return write_error(query.id, r.error, out);
+  if (!all_finite(r)) return write_error(query.id, kNotFinite, out);
   double us = 0;
   if (options.timing) {
     volatile int sink = 0;
@@ -86,79 +105,61 @@ void write_intersect(const Query& query, const AnswerOptions& options, std::stri
   begin_answer(query.id, status_name(r.status), out);
   append_field(out, "intersect");
   out += r.intersect ? "true" : "false";
+  write_fields(r);
   append_field(out, "iterations");
   append_integer(out, r.iterations);
+  if constexpr (requires { r.error_bound; }) {
+    if (r.status == Status::IterationLimit) {
+      append_field(out, "error_bound");
+      append_number(out, r.error_bound);
+    }
+  }
   end_answer(options, us, out);
 }
 
+void write_intersect(const Query& query, const AnswerOptions& options, std::string& out) {
+  write_answer_of(
+      query, options, [&] { return intersect(query.a, query.pose_a, query.b, query.pose_b); },
+      [](const IntersectResult&) {}, out);
+}
+
 void write_distance(const Query& query, const AnswerOptions& options, std::string& out) {
-  const auto run = [&] { return distance(query.a, query.pose_a, query.b, query.pose_b); };
-  const DistanceResult r = run();
-  if (r.status == Status::InvalidInput) return write_error(query.id, r.error, out);
-  if (!std::isfinite(r.distance) || !std::isfinite(r.error_bound) || !is_finite(r.normal) ||
-      !is_finite(r.point_a) || !is_finite(r.point_b))
-    return write_error(query.id, kNotFinite, out);
-  double us = 0;
-  if (options.timing) {
-    volatile int sink = 0;
-    us = median_microseconds([&] { sink = sink + run().iterations; });
-  }
-  begin_answer(query.id, status_name(r.status), out);
-  append_field(out, "intersect");
-  out += r.intersect ? "true" : "false";
-  append_field(out, "distance");
-  append_number(out, r.distance);
-  // The normal and points are defined only for separated shapes; GJK leaves them zero otherwise.
-  if (!r.intersect && r.normal.squaredNorm() > 0) {
+  const auto fields = [&out](const DistanceResult& r) {
+    append_field(out, "distance");
+    append_number(out, r.distance);
+    // The normal and points are defined only for separated shapes; GJK leaves them zero
+    // otherwise.
+    if (!r.intersect && r.normal.squaredNorm() > 0) {
+      append_field(out, "normal");
+      append_vec3(out, r.normal);
+      append_field(out, "point_a");
+      append_vec3(out, r.point_a);
+      append_field(out, "point_b");
+      append_vec3(out, r.point_b);
+    }
+  };
+  write_answer_of(
+      query, options, [&] { return distance(query.a, query.pose_a, query.b, query.pose_b); },
+      fields, out);
+}
+
+void write_contact(const Query& query, const AnswerOptions& options, std::string& out) {
+  const auto fields = [&out](const ContactResult& r) {
+    append_field(out, "distance");
+    append_number(out, r.distance);
+    append_field(out, "depth");
+    append_number(out, r.depth);
     append_field(out, "normal");
     append_vec3(out, r.normal);
     append_field(out, "point_a");
     append_vec3(out, r.point_a);
     append_field(out, "point_b");
     append_vec3(out, r.point_b);
-  }
-  append_field(out, "iterations");
-  append_integer(out, r.iterations);
-  if (r.status == Status::IterationLimit) {
-    append_field(out, "error_bound");
-    append_number(out, r.error_bound);
-  }
-  end_answer(options, us, out);
-}
-
-void write_contact(const Query& query, const AnswerOptions& options, std::string& out) {
-  const auto run = [&] { return contact(query.a, query.pose_a, query.b, query.pose_b); };
-  const ContactResult r = run();
-  if (r.status == Status::InvalidInput) return write_error(query.id, r.error, out);
-  if (!std::isfinite(r.distance) || !std::isfinite(r.depth) || !std::isfinite(r.error_bound) ||
-      !is_finite(r.normal) || !is_finite(r.point_a) || !is_finite(r.point_b))
-    return write_error(query.id, kNotFinite, out);
-  double us = 0;
-  if (options.timing) {
-    volatile int sink = 0;
-    us = median_microseconds([&] { sink = sink + run().iterations; });
-  }
-  begin_answer(query.id, status_name(r.status), out);
-  append_field(out, "intersect");
-  out += r.intersect ? "true" : "false";
-  append_field(out, "distance");
-  append_number(out, r.distance);
-  append_field(out, "depth");
-  append_number(out, r.depth);
-  append_field(out, "normal");
-  append_vec3(out, r.normal);
-  append_field(out, "point_a");
-  append_vec3(out, r.point_a);
-  append_field(out, "point_b");
-  append_vec3(out, r.point_b);
-  if (r.normal_chosen) out += ",\"normal_chosen\":true";
-  append_field(out, "iterations");
-  append_integer(out, r.iterations);
-  if (r.status == Status::IterationLimit) {
-    append_field(out, "error_bound");
-    append_number(out, r.error_bound);
-  }
-  end_answer(options, us, out);
+    if (r.normal_chosen) out += ",\"normal_chosen\":true";
+  };
+  write_answer_of(
+      query, options, [&] { return contact(query.a, query.pose_a, query.b, query.pose_b); }, fields,
+      out);
 }
 
 }  // namespace
