@@ -121,11 +121,8 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   auto cores_apart = [&] {
     // Separated, or penetrating by the radii only.
-    Vec3T<S> on_a = Vec3T<S>::Zero(), on_b = Vec3T<S>::Zero();
-    for (int i = 0; i < gjk.simplex.size; ++i) {
-      on_a += gjk.simplex.weights[i] * gjk.simplex.vertices[i].a;
-      on_b += gjk.simplex.weights[i] * gjk.simplex.vertices[i].b;
-    }
+    Vec3T<S> on_a, on_b;
+    gjk.simplex.witness_points(on_a, on_b);
     detail::contact_from_cores(on_a, on_b, gjk.upper, radius_a, radius_b, inside, pose_a, result);
     result.error_bound = std::max(S(0), gjk.upper - gjk.lower);
     result.status = gjk.status == Status::IterationLimit

@@ -117,15 +117,23 @@ struct EpaOutcome {
 /// Tries per expansion before EPA gives up on keeping P convex and stops with its bracket.
 inline constexpr int kMaxExpansionAttempts = 8;
 
+/// Unnormalised counter-clockwise normal n of the triangle (p, q, r) and nn = |n|^2; false when
+/// the triangle has no area to rounding.
+template <class S>
+bool triangle_cross(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Vec3T<S>& n, S& nn) {
+  const Vec3T<S> e1 = q - p, e2 = r - p;
+  n = e1.cross(e2);
+  nn = n.squaredNorm();
+  return nn > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm() && nn > S(0);
+}
+
 /// Unit normal of the triangle (p, q, r), counter-clockwise; false when it has no area to
 /// rounding.
 template <class S>
 bool triangle_normal(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Vec3T<S>& n) {
-  const Vec3T<S> e1 = q - p, e2 = r - p;
-  const Vec3T<S> c = e1.cross(e2);
-  const S cc = c.squaredNorm();
-  if (!(cc > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm()) || !(cc > S(0))) return false;
-  n = c / std::sqrt(cc);
+  S nn;
+  if (!triangle_cross(p, q, r, n, nn)) return false;
+  n /= std::sqrt(nn);
   return true;
 }
 
@@ -137,10 +145,9 @@ int make_epa_face(EpaWorkspace<S>& ws, int i, int j, int k) {
   const Vec3T<S>& p = ws.vertices[i].w;
   const Vec3T<S>& q = ws.vertices[j].w;
   const Vec3T<S>& r = ws.vertices[k].w;
-  const Vec3T<S> e1 = q - p, e2 = r - p;
-  const Vec3T<S> n = e1.cross(e2);
-  const S nn = n.squaredNorm();
-  if (!(nn > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm()) || !(nn > S(0))) return -1;
+  Vec3T<S> n;
+  S nn;
+  if (!triangle_cross(p, q, r, n, nn)) return -1;
   EpaFace<S>& face = ws.faces.emplace_back();
   face.n = n;
   face.nn = nn;
@@ -243,16 +250,8 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
 
   for (int i = 0; i < simplex.size; ++i) ws.vertices.push_back(simplex.vertices[i]);
   // Witness points of the degenerate answers: the point of GJK's simplex nearest the origin.
-  Vec3T<S> gjk_a = Vec3T<S>::Zero(), gjk_b = Vec3T<S>::Zero();
-  {
-    S total = S(0);
-    for (int i = 0; i < simplex.size; ++i) total += simplex.weights[i];
-    for (int i = 0; i < simplex.size; ++i) {
-      const S weight = total > S(0) ? simplex.weights[i] / total : S(1) / S(simplex.size);
-      gjk_a += weight * simplex.vertices[i].a;
-      gjk_b += weight * simplex.vertices[i].b;
-    }
-  }
+  Vec3T<S> gjk_a, gjk_b;
+  simplex.witness_points(gjk_a, gjk_b);
   auto support = [&](const Vec3T<S>& d) {
     SimplexVertexT<S> vertex;
     diff.support(d, vertex);

@@ -104,11 +104,8 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
                      core_distance <= radius_a + radius_b + tolerances.relative * size;
   if (!(core_distance > S(0))) return result;
   const Vec3T<S> normal_local = -gjk.v / core_distance;
-  Vec3T<S> on_a = Vec3T<S>::Zero(), on_b = Vec3T<S>::Zero();
-  for (int i = 0; i < gjk.simplex.size; ++i) {
-    on_a += gjk.simplex.weights[i] * gjk.simplex.vertices[i].a;
-    on_b += gjk.simplex.weights[i] * gjk.simplex.vertices[i].b;
-  }
+  Vec3T<S> on_a, on_b;
+  gjk.simplex.witness_points(on_a, on_b);
   on_a += radius_a * normal_local;
   on_b -= radius_b * normal_local;
   result.normal = pose_a.rotate(normal_local);

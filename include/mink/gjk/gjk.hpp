@@ -55,6 +55,28 @@ struct CoreDifference {
   }
 };
 
+/// A warm-start cache is only a hint: one with a bad size or a non-finite direction is ignored.
+template <class S>
+bool cache_is_usable(const GjkCacheT<S>* cache) {
+  if (!cache || cache->size <= 0 || cache->size > 4) return false;
+  for (int i = 0; i < cache->size; ++i)
+    if (!is_finite(cache->directions[i])) return false;
+  return true;
+}
+
+/// Stores the final simplex's directions (`direction_of(i)`, i < count) for the next query; an
+/// empty simplex stores the last search direction instead.
+template <class S, class DirectionOf>
+void save_cache(GjkCacheT<S>* cache, int count, DirectionOf&& direction_of, const Vec3T<S>& v) {
+  if (!cache) return;
+  cache->size = count;
+  for (int i = 0; i < count; ++i) cache->directions[i] = direction_of(i);
+  if (count == 0 && v.squaredNorm() > S(0)) {
+    cache->size = 1;
+    cache->directions[0] = -v;
+  }
+}
+
 template <class S>
 struct GjkOutcome {
   Status status = Status::Separated;
@@ -90,10 +112,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
 
   Vec3T<S> v;
   bool v_in_set = false;  // v is a point of A - B (so |v| bounds the distance from above)
-  // A cache is only a hint: one with a non-finite direction or a bad size is ignored.
-  bool use_cache = cache && cache->size > 0 && cache->size <= 4;
-  for (int i = 0; use_cache && i < cache->size; ++i) use_cache = is_finite(cache->directions[i]);
-  if (use_cache) {
+  if (cache_is_usable(cache)) {
     // Rebuild the previous simplex from its directions: fresh support points of the current poses.
     for (int i = 0; i < cache->size; ++i) {
       SimplexVertexT<S> vertex;
@@ -232,14 +251,8 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
   if (out.status == Status::Separated && out.upper <= inside) out.status = Status::Intersecting;
   // Cores that meet have distance 0; cores apart but within the radii keep their bounds.
   if (out.status == Status::Intersecting && !(out.upper > touch)) out.lower = S(0);
-  if (cache) {
-    cache->size = simplex.size;
-    for (int i = 0; i < simplex.size; ++i) cache->directions[i] = simplex.vertices[i].dir;
-    if (simplex.size == 0 && v.squaredNorm() > S(0)) {
-      cache->size = 1;
-      cache->directions[0] = -v;
-    }
-  }
+  save_cache(
+      cache, simplex.size, [&simplex](int i) { return simplex.vertices[i].dir; }, v);
   return out;
 }
 
@@ -273,32 +286,18 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>
 
   // The closest point of points[0..n) to the origin; keeps only the sub-simplex that holds it.
   auto reduce = [&points, &directions, &count](const SubSimplex<S>& r, int n) {
-    int kept = 0;
-    for (int i = 0; i < n; ++i) {
-      if ((r.mask >> i & 1u) && r.weights[i] > S(0)) {
-        points[kept] = points[i];
-        directions[kept] = directions[i];
-        ++kept;
-      }
+    const KeptVertices<S> kept = vertices_to_keep(r, points, n);
+    for (int j = 0; j < kept.count; ++j) {
+      points[j] = points[kept.index[j]];
+      directions[j] = directions[kept.index[j]];
     }
-    if (kept == 0) {  // every weight rounded to zero: keep the closest point
-      int best = 0;
-      for (int i = 1; i < n; ++i)
-        if (points[i].squaredNorm() < points[best].squaredNorm()) best = i;
-      points[0] = points[best];
-      directions[0] = directions[best];
-      count = 1;
-      return points[0];
-    }
-    count = kept;
-    return r.v;
+    count = kept.count;
+    return kept.v;
   };
 
   Vec3T<S> v;
   bool v_in_set = false;  // v is a point of A - B (so |v| bounds the distance from above)
-  bool use_cache = cache && cache->size > 0 && cache->size <= 4;
-  for (int i = 0; use_cache && i < cache->size; ++i) use_cache = is_finite(cache->directions[i]);
-  if (use_cache) {
+  if (cache_is_usable(cache)) {
     for (int i = 0; i < cache->size; ++i) {
       const Vec3T<S> w = diff.support_point(cache->directions[i]);
       ++out.iterations;
@@ -367,14 +366,8 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>
     v_in_set = true;
   }
   out.upper = v_in_set ? v.norm() : std::numeric_limits<S>::infinity();
-  if (cache) {
-    cache->size = count;
-    for (int i = 0; i < count; ++i) cache->directions[i] = directions[i];
-    if (count == 0 && v.squaredNorm() > S(0)) {
-      cache->size = 1;
-      cache->directions[0] = -v;
-    }
-  }
+  save_cache(
+      cache, count, [&directions](int i) { return directions[i]; }, v);
   if (stalled) {
     // The bounds straddle `inside` and this simplex cannot tighten them: let the distance loop,
     // with its recombination and restarts, decide.

@@ -201,33 +201,54 @@ SubSimplex<S> closest_of_simplex(const Vec3T<S>* w, int size) {
   }
 }
 
+/// The vertices of a simplex of `n` points `w` that the closest point to the origin needs: their
+/// indices in increasing order with their weights, and the point. When every weight rounded to
+/// zero, the vertex closest to the origin alone.
+template <class S>
+struct KeptVertices {
+  int index[4];
+  S weight[4];
+  int count = 0;
+  Vec3T<S> v;
+};
+
+template <class S>
+KeptVertices<S> vertices_to_keep(const SubSimplex<S>& r, const Vec3T<S>* w, int n) {
+  KeptVertices<S> kept;
+  for (int i = 0; i < n; ++i) {
+    if ((r.mask >> i & 1u) && r.weights[i] > S(0)) {
+      kept.index[kept.count] = i;
+      kept.weight[kept.count] = r.weights[i];
+      ++kept.count;
+    }
+  }
+  kept.v = r.v;
+  if (kept.count == 0) {
+    int best = 0;
+    for (int i = 1; i < n; ++i)
+      if (w[i].squaredNorm() < w[best].squaredNorm()) best = i;
+    kept.index[0] = best;
+    kept.weight[0] = S(1);
+    kept.count = 1;
+    kept.v = w[best];
+  }
+  return kept;
+}
+
 /// Writes to `out` the smallest sub-simplex of `in` whose hull holds the point of `in` closest to
 /// the origin, with its weights, and returns that point. `in` and `out` may be the same simplex.
 template <class S>
 Vec3T<S> reduce_to_closest(const SimplexT<S>& in, SimplexT<S>& out) {
   Vec3T<S> w[4];
   for (int i = 0; i < 4; ++i) w[i] = i < in.size ? in.vertices[i].w : Vec3T<S>::Zero();
-  SubSimplex<S> r = closest_of_simplex(w, in.size);
-  // Keep the vertices with a positive weight, in order (kept <= i, so in-place is safe).
-  int kept = 0;
-  for (int i = 0; i < in.size; ++i) {
-    if ((r.mask >> i & 1u) && r.weights[i] > S(0)) {
-      if (&out != &in || kept != i) out.vertices[kept] = in.vertices[i];
-      out.weights[kept] = r.weights[i];
-      ++kept;
-    }
+  const KeptVertices<S> kept = vertices_to_keep(closest_of_simplex(w, in.size), w, in.size);
+  // Indices increase and index[j] >= j, so copying in place is safe.
+  for (int j = 0; j < kept.count; ++j) {
+    if (&out != &in || kept.index[j] != j) out.vertices[j] = in.vertices[kept.index[j]];
+    out.weights[j] = kept.weight[j];
   }
-  if (kept == 0) {  // every weight rounded to zero: keep the closest vertex
-    int best = 0;
-    for (int i = 1; i < in.size; ++i)
-      if (w[i].squaredNorm() < w[best].squaredNorm()) best = i;
-    out.vertices[0] = in.vertices[best];
-    out.weights[0] = S(1);
-    kept = 1;
-    r.v = in.vertices[best].w;
-  }
-  out.size = kept;
-  return r.v;
+  out.size = kept.count;
+  return kept.v;
 }
 
 }  // namespace mink::detail

@@ -20,6 +20,21 @@ struct SimplexT {
   SimplexVertexT<S> vertices[4];
   S weights[4] = {};  ///< barycentric weights of the closest point, > 0 and summing to 1
   int size = 0;       ///< 0..4
+
+  /// The closest point's witnesses on A and B: the weighted sums of the vertices' support
+  /// points. Weights are renormalised (equal weights if they are all 0) so that a simplex whose
+  /// weights were never set still gives a point of each shape.
+  void witness_points(Vec3T<S>& on_a, Vec3T<S>& on_b) const {
+    S total = S(0);
+    for (int i = 0; i < size; ++i) total += weights[i];
+    on_a = Vec3T<S>::Zero();
+    on_b = Vec3T<S>::Zero();
+    for (int i = 0; i < size; ++i) {
+      const S weight = total > S(0) ? weights[i] / total : S(1) / S(size);
+      on_a += weight * vertices[i].a;
+      on_b += weight * vertices[i].b;
+    }
+  }
 };
 
 /// Warm start for temporally coherent queries: the directions of the last final simplex in A's
