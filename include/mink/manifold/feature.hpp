@@ -1,0 +1,360 @@
+/// @file feature.hpp
+/// Support features: the whole face, edge or vertex of a shape that is farthest along a direction,
+/// not just one support point. Contact manifolds (manifold.hpp) clip one shape's feature against
+/// the other's.
+///
+/// Frame: the shape's local frame, like support_core().
+///
+/// Cores only: a sphere's feature is its centre, a capsule's its segment; the caller pushes the
+/// feature out by core_radius() along d.
+///
+/// Which feature: every point of the core's surface whose height along the unit direction is
+/// within `tolerance` (unit: length) of the support plane belongs to it. So a box whose face is
+/// tilted from the direction by less than about tolerance / (face width) gives the face, a box
+/// tilted more gives an edge or a vertex. A generous tolerance is safe for the manifold: the
+/// points it clips keep their own depths, and points that are not in contact fall out there.
+///
+/// Customisation: a shape type gives manifolds its features by an overload
+/// `void support_feature(const T&, const Vec3T<S>& d, S tolerance, SupportFeatureT<S>& out)`
+/// in its own namespace (found by argument-dependent lookup). Shapes without one get a feature
+/// sampled from the support mapping (support_feature_of() below).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "mink/shapes/box.hpp"
+#include "mink/shapes/capsule.hpp"
+#include "mink/shapes/cone.hpp"
+#include "mink/shapes/cylinder.hpp"
+#include "mink/shapes/ellipsoid.hpp"
+#include "mink/shapes/point.hpp"
+#include "mink/shapes/polytope.hpp"
+#include "mink/shapes/segment.hpp"
+#include "mink/shapes/sphere.hpp"
+#include "mink/shapes/triangle.hpp"
+#include "mink/support/concept.hpp"
+#include "mink/support/rounded.hpp"
+
+namespace mink {
+
+/// Most points a feature holds: a polytope face with more vertices keeps an evenly spread subset,
+/// a cylinder's or cone's cap is this many rim points.
+inline constexpr int kMaxFeaturePoints = 16;
+
+/// A vertex (1 point), an edge (2 points) or a convex polygon (3 or more points, ordered
+/// counter-clockwise about `normal`) of a shape, in the shape's frame.
+template <class S>
+struct SupportFeatureT {
+  int count = 0;                        ///< 1, 2 or 3..kMaxFeaturePoints
+  Vec3T<S> normal = Vec3T<S>::UnitZ();  ///< polygons: unit outward face normal; else unused
+  Vec3T<S> points[kMaxFeaturePoints];   ///< (unit: length)
+
+  void set_point(const Vec3T<S>& p) {
+    count = 1;
+    points[0] = p;
+  }
+  void set_edge(const Vec3T<S>& p, const Vec3T<S>& q) {
+    count = 2;
+    points[0] = p;
+    points[1] = q;
+  }
+};
+
+namespace detail {
+
+/// Unit vectors u, v with (u, v, n) right-handed and orthonormal, for a unit n.
+template <class S>
+void plane_basis(const Vec3T<S>& n, Vec3T<S>& u, Vec3T<S>& v) {
+  u = std::abs(n.x()) > std::abs(n.z()) ? Vec3T<S>(-n.y(), n.x(), S(0))
+                                        : Vec3T<S>(S(0), -n.z(), n.y());
+  u.normalize();
+  v = n.cross(u);
+}
+
+/// The feature spanned by `count` points that all lie within the tolerance of one support plane
+/// with unit normal `n`: their convex hull seen along n (Andrew's monotone chain), as a vertex,
+/// an edge or a counter-clockwise polygon whose normal is the plane's fitted normal (Newell).
+/// `points` is reordered. At most 64 points are read.
+template <class S>
+void feature_from_points(Vec3T<S>* points, int count, const Vec3T<S>& n, SupportFeatureT<S>& out) {
+  count = std::min(count, 64);
+  if (count <= 1) {
+    out.set_point(points[0]);
+    return;
+  }
+  Vec3T<S> u, v;
+  plane_basis(n, u, v);
+  struct Planar {
+    S x, y;
+    int i;
+  };
+  Planar p[64], hull[130];
+  for (int i = 0; i < count; ++i) p[i] = {points[i].dot(u), points[i].dot(v), i};
+  std::sort(p, p + count, [](const Planar& a, const Planar& b) {
+    return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.i < b.i)));
+  });
+  auto turn = [](const Planar& o, const Planar& a, const Planar& b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
+  // Collinear and repeated points are dropped (turn <= 0), so the hull is strictly convex.
+  int k = 0;
+  for (int i = 0; i < count; ++i) {
+    while (k >= 2 && turn(hull[k - 2], hull[k - 1], p[i]) <= S(0)) --k;
+    hull[k++] = p[i];
+  }
+  for (int i = count - 2, lower = k + 1; i >= 0; --i) {
+    while (k >= lower && turn(hull[k - 2], hull[k - 1], p[i]) <= S(0)) --k;
+    hull[k++] = p[i];
+  }
+  const int n_hull = k - 1;  // the last point repeats the first
+  if (n_hull <= 1 || (hull[0].x == hull[1].x && hull[0].y == hull[1].y)) {
+    out.set_point(points[hull[0].i]);
+    return;
+  }
+  if (n_hull == 2) {
+    out.set_edge(points[hull[0].i], points[hull[1].i]);
+    return;
+  }
+  // More corners than a feature holds: an evenly spread subset (it stays convex).
+  const int kept = std::min(n_hull, kMaxFeaturePoints);
+  out.count = kept;
+  for (int j = 0; j < kept; ++j) out.points[j] = points[hull[(j * n_hull) / kept].i];
+  Vec3T<S> normal = Vec3T<S>::Zero();
+  for (int j = 0; j < kept; ++j) {
+    const Vec3T<S>& a = out.points[j];
+    const Vec3T<S>& b = out.points[(j + 1) % kept];
+    normal += (a - out.points[0]).cross(b - out.points[0]);
+  }
+  const S length = normal.norm();
+  out.normal = length > S(0) && normal.dot(n) > S(0) ? Vec3T<S>(normal / length) : n;
+}
+
+/// A cap of `kMaxFeaturePoints` points on the circle of `radius` at height z, counter-clockwise
+/// about (0, 0, sign(z_normal)).
+template <class S>
+void rim_feature(S radius, S z, S z_normal, SupportFeatureT<S>& out) {
+  out.count = kMaxFeaturePoints;
+  out.normal = Vec3T<S>(S(0), S(0), z_normal >= S(0) ? S(1) : S(-1));
+  for (int i = 0; i < kMaxFeaturePoints; ++i) {
+    const S angle = S(2) * std::numbers::pi_v<S> * S(i) / S(kMaxFeaturePoints);
+    const S c = std::cos(angle), s = std::sin(angle);
+    out.points[z_normal >= S(0) ? i : kMaxFeaturePoints - 1 - i] = {radius * c, radius * s, z};
+  }
+}
+
+}  // namespace detail
+
+// Features of the primitive shapes. d need not be unit, must not be zero (a zero d gives a vertex).
+
+template <class S>
+void support_feature(const PointT<S>& shape, const Vec3T<S>&, S, SupportFeatureT<S>& out) {
+  out.set_point(shape.position);
+}
+
+template <class S>
+void support_feature(const SphereT<S>&, const Vec3T<S>&, S, SupportFeatureT<S>& out) {
+  out.set_point(Vec3T<S>::Zero());
+}
+
+template <class S>
+void support_feature(const EllipsoidT<S>& shape, const Vec3T<S>& d, S, SupportFeatureT<S>& out) {
+  out.set_point(shape.support_core(d));  // strictly convex: always a single point
+}
+
+template <class S>
+void support_feature(const BoxT<S>& box, const Vec3T<S>& d, S tolerance, SupportFeatureT<S>& out) {
+  // An axis is free when flipping its coordinate changes the height by at most the tolerance.
+  const S length = d.norm();
+  const Vec3T<S>& h = box.half_extents;
+  const Vec3T<S> corner = box.support_core(d);
+  bool free[3];
+  int n_free = 0;
+  for (int i = 0; i < 3; ++i) {
+    free[i] = S(2) * h[i] * std::abs(d[i]) <= tolerance * length;
+    n_free += free[i];
+  }
+  if (n_free == 3) {
+    // A box small against the tolerance: its face most aligned with d.
+    int k = 0;
+    for (int i = 1; i < 3; ++i)
+      if (std::abs(d[i]) > std::abs(d[k])) k = i;
+    free[k] = false;
+    n_free = 2;
+  }
+  if (n_free == 0) {
+    out.set_point(corner);
+    return;
+  }
+  if (n_free == 1) {
+    const int i = free[0] ? 0 : (free[1] ? 1 : 2);
+    Vec3T<S> p = corner, q = corner;
+    p[i] = -h[i];
+    q[i] = h[i];
+    out.set_edge(p, q);
+    return;
+  }
+  const int k = !free[0] ? 0 : (!free[1] ? 1 : 2);
+  const int i = (k + 1) % 3, j = (k + 2) % 3;  // e_i x e_j = e_k
+  const S side = detail::sign_nonneg(d[k]);
+  static constexpr S kSigns[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  out.count = 4;
+  out.normal = Vec3T<S>::Zero();
+  out.normal[k] = side;
+  for (int c = 0; c < 4; ++c) {
+    Vec3T<S> p;
+    p[k] = side * h[k];
+    p[i] = kSigns[c][0] * h[i];
+    p[j] = kSigns[c][1] * h[j];
+    out.points[side > S(0) ? c : 3 - c] = p;  // counter-clockwise about the outward normal
+  }
+}
+
+template <class S>
+void support_feature(const SegmentT<S>& segment, const Vec3T<S>& d, S tolerance,
+                     SupportFeatureT<S>& out) {
+  if (std::abs(d.dot(segment.b - segment.a)) <= tolerance * d.norm())
+    out.set_edge(segment.a, segment.b);
+  else
+    out.set_point(segment.support_core(d));
+}
+
+template <class S>
+void support_feature(const CapsuleT<S>& capsule, const Vec3T<S>& d, S tolerance,
+                     SupportFeatureT<S>& out) {
+  // The core only: Rounded and the manifold add the radius.
+  const S h = capsule.half_height;
+  if (S(2) * h * std::abs(d.z()) <= tolerance * d.norm())
+    out.set_edge({S(0), S(0), -h}, {S(0), S(0), h});
+  else
+    out.set_point(capsule.support_core(d));
+}
+
+template <class S>
+void support_feature(const CylinderT<S>& cylinder, const Vec3T<S>& d, S tolerance,
+                     SupportFeatureT<S>& out) {
+  const S length = d.norm();
+  const S rho = std::hypot(d.x(), d.y());
+  const S r = cylinder.radius, h = cylinder.half_height;
+  if (S(2) * r * rho <= tolerance * length) {
+    // Standing on a cap: the rim points describe the contact.
+    detail::rim_feature(r, detail::sign_nonneg(d.z()) * h, d.z(), out);
+    return;
+  }
+  if (S(2) * h * std::abs(d.z()) <= tolerance * length) {
+    const S k = r / rho;
+    out.set_edge({k * d.x(), k * d.y(), -h}, {k * d.x(), k * d.y(), h});
+    return;
+  }
+  out.set_point(cylinder.support_core(d));
+}
+
+template <class S>
+void support_feature(const ConeT<S>& cone, const Vec3T<S>& d, S tolerance,
+                     SupportFeatureT<S>& out) {
+  const S length = d.norm();
+  const S rho = std::hypot(d.x(), d.y());
+  const S r = cone.radius, h = cone.half_height;
+  if (d.z() < S(0) && S(2) * r * rho <= tolerance * length) {
+    detail::rim_feature(r, -h, S(-1), out);
+    return;
+  }
+  // Apex and rim point at the same height: the side line between them.
+  const S apex = h * d.z(), rim = r * rho - h * d.z();
+  if (rho > S(0) && std::abs(apex - rim) <= tolerance * length) {
+    const S k = r / rho;
+    out.set_edge({S(0), S(0), h}, {k * d.x(), k * d.y(), -h});
+    return;
+  }
+  out.set_point(cone.support_core(d));
+}
+
+template <class S>
+void support_feature(const TriangleT<S>& triangle, const Vec3T<S>& d, S tolerance,
+                     SupportFeatureT<S>& out) {
+  const S length = d.norm();
+  const Vec3T<S> n = d / length;
+  Vec3T<S> corners[3] = {triangle.a, triangle.b, triangle.c};
+  const S top = std::max({corners[0].dot(n), corners[1].dot(n), corners[2].dot(n)});
+  Vec3T<S> near[3];
+  int count = 0;
+  for (const Vec3T<S>& c : corners)
+    if (top - c.dot(n) <= tolerance) near[count++] = c;
+  detail::feature_from_points(near, count, n, out);
+}
+
+template <class S>
+void support_feature(const PolytopeT<S>& polytope, const Vec3T<S>& d, S tolerance,
+                     SupportFeatureT<S>& out) {
+  // One scan for the support height, one for the points near it (a polytope carries no faces).
+  // The points within the tolerance need not be one face: the tip of a nearly flat ridge also
+  // qualifies, and a polygon through it would put manifold points inside the polytope. So the
+  // polygon must be planar (every near point within 1e-12 of the size of its fitted plane), and
+  // and support the polytope, and the tolerance shrinks tenfold until it does; a face that the
+  // normal hits exactly survives.
+  const Vec3T<S> n = d.normalized();
+  const S top = polytope.point(polytope.support_index(n)).dot(n);
+  const S flat = S(1e-12) * polytope.bounding_radius();
+  constexpr int kMaxNear = 64;
+  Vec3T<S> near[kMaxNear];
+  for (int round = 0; round < 4; ++round, tolerance *= S(0.1)) {
+    int count = 0;
+    for (std::size_t i = 0; i < polytope.size() && count < kMaxNear; ++i) {
+      const Vec3T<S> p = polytope.point(i);
+      if (top - p.dot(n) <= tolerance) near[count++] = p;
+    }
+    detail::feature_from_points(near, count, n, out);
+    if (out.count < 3) return;
+    const S w = out.normal.dot(out.points[0]);
+    bool planar = true;
+    for (int i = 0; i < count && planar; ++i)
+      planar = std::abs(out.normal.dot(near[i]) - w) <= flat;
+    // And the plane must support the polytope: three near points always fit a plane, but it may
+    // cut through the polytope.
+    if (planar && polytope.support_core(out.normal).dot(out.normal) <= w + flat) return;
+  }
+  out.set_point(polytope.support_core(n));
+}
+
+template <ConvexShape T>
+void support_feature_of(const T& shape, const Vec3T<typename T::Scalar>& d,
+                        typename T::Scalar tolerance, SupportFeatureT<typename T::Scalar>& out);
+
+/// A rounded shape's core is its inner shape's core (the manifold adds core_radius() itself).
+template <ConvexShape T>
+void support_feature(const Rounded<T>& shape, const Vec3T<typename T::Scalar>& d,
+                     typename T::Scalar tolerance, SupportFeatureT<typename T::Scalar>& out) {
+  support_feature_of(shape.shape, d, tolerance, out);
+}
+
+/// The feature of any shape's core along d (not unit, not zero): the shape's own
+/// support_feature() overload where it has one, else a feature sampled from the support mapping
+/// (the support along d and along 8 directions tilted 0.1 rad around it, keeping the points within
+/// the tolerance of the support plane: a face or edge of a sum of polytopes, a single point of a
+/// curved surface).
+template <ConvexShape T>
+void support_feature_of(const T& shape, const Vec3T<typename T::Scalar>& d,
+                        typename T::Scalar tolerance, SupportFeatureT<typename T::Scalar>& out) {
+  using S = typename T::Scalar;
+  if constexpr (requires { support_feature(shape, d, tolerance, out); }) {
+    support_feature(shape, d, tolerance, out);
+  } else {
+    const Vec3T<S> n = d.normalized();
+    Vec3T<S> u, v;
+    detail::plane_basis(n, u, v);
+    Vec3T<S> near[9];
+    near[0] = shape.support_core(n);
+    const S top = near[0].dot(n);
+    int count = 1;
+    for (int i = 0; i < 8; ++i) {
+      const S angle = S(2) * std::numbers::pi_v<S> * S(i) / S(8);
+      const Vec3T<S> p =
+          shape.support_core(n + S(0.1) * (std::cos(angle) * u + std::sin(angle) * v));
+      if (top - p.dot(n) <= tolerance) near[count++] = p;
+    }
+    detail::feature_from_points(near, count, n, out);
+  }
+}
+
+}  // namespace mink

@@ -1,0 +1,297 @@
+// manifold() on the exact cases of issue 6, against answers computed here by hand: a box resting
+// face down on a larger box (its four bottom corners, each at the overlap depth), rotated about
+// the normal by random angles; a box tilted onto an edge (the edge's two end points); a capsule
+// lying on a box (its segment's end points, moved down by the radius); a cylinder standing on a
+// box (points of its bottom rim); a hull face on a box face (the face's corners); a sphere (one
+// point); speculative points within the margin; and stability of box on box under 1e-9 rotations.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "mink/manifold/manifold.hpp"
+#include "mink/mink.hpp"
+#include "oracle/random.hpp"
+
+namespace {
+
+using mink::ManifoldResult;
+using mink::Pose;
+using mink::Quat;
+using mink::Vec3;
+using oracle::Rng;
+
+/// A world frame for the whole scene: the table's top face has normal `up`.
+struct Scene {
+  Pose frame;  // scene -> world
+  Pose place(const Vec3& t, const Quat& q) const {
+    const Pose local = Pose::from(t, q);
+    Pose p;
+    p.rotation = frame.rotation * local.rotation;
+    p.translation = frame.apply(local.translation);
+    return p;
+  }
+  Vec3 up() const { return frame.rotation.col(2); }
+};
+
+Scene random_scene(Rng& rng) {
+  return {Pose::from(rng.in_ball(100), rng.rotation())};
+}
+
+Quat about_z(double angle) {
+  return Quat(Eigen::AngleAxisd(angle, Vec3::UnitZ()));
+}
+
+/// Each expected point_b is matched by exactly one manifold point (within tol), whose depth is
+/// `depth` and whose point_a = point_b + depth * normal.
+void expect_points(const ManifoldResult& r, const std::vector<Vec3>& expected_b, double depth,
+                   double tol) {
+  ASSERT_EQ(r.count, int(expected_b.size()));
+  std::vector<bool> used(r.count, false);
+  for (const Vec3& e : expected_b) {
+    int match = -1;
+    for (int i = 0; i < r.count; ++i)
+      if (!used[i] && (r.points[i].point_b - e).norm() <= tol) match = i;
+    ASSERT_GE(match, 0) << "no manifold point at " << e.transpose();
+    used[match] = true;
+    EXPECT_NEAR(r.points[match].depth, depth, tol);
+    EXPECT_LE((r.points[match].point_a - (e + depth * r.normal)).norm(), tol);
+  }
+}
+
+TEST(ManifoldExact, BoxRestingOnLargerBox) {
+  for (int k = 0; k < 200; ++k) {
+    Rng rng(600000 + k);
+    const Scene scene = random_scene(rng);
+    const mink::Box table{{4, 3, 0.5}};
+    const Vec3 h(rng.uniform(0.2, 1), rng.uniform(0.2, 1), rng.uniform(0.1, 1));
+    const mink::Box box{h};
+    const double overlap = rng.log_uniform(1e-6, 0.05);
+    const double angle = rng.uniform(0, 2 * std::numbers::pi);
+    // Inside the table's top face whatever the angle: the corners stay within |h| of the centre.
+    const Vec3 centre(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.5 + h.z() - overlap);
+    const Pose pt = scene.place(Vec3::Zero(), Quat::Identity());
+    const Pose pb = scene.place(centre, about_z(angle));
+    const ManifoldResult r = mink::manifold(table, pt, box, pb);
+    ASSERT_EQ(r.status, mink::Status::Intersecting) << oracle::seed_note(600000 + k);
+    EXPECT_LE((r.normal - scene.up()).norm(), 1e-12);
+    // The box's bottom corners by hand: the box frame's x, y axes turned by `angle` about z.
+    std::vector<Vec3> corners;
+    const double c = std::cos(angle), s = std::sin(angle);
+    for (int sx = -1; sx <= 1; sx += 2)
+      for (int sy = -1; sy <= 1; sy += 2) {
+        const double x = sx * h.x(), y = sy * h.y();
+        corners.push_back(scene.frame.apply(centre + Vec3(c * x - s * y, s * x + c * y, -h.z())));
+      }
+    expect_points(r, corners, overlap, 1e-9 * 10);
+    EXPECT_NEAR(r.depth, overlap, 1e-12 * 100);
+  }
+}
+
+TEST(ManifoldExact, BoxTiltedOnEdgeGivesTwoPoints) {
+  for (int k = 0; k < 200; ++k) {
+    Rng rng(601000 + k);
+    const Scene scene = random_scene(rng);
+    const mink::Box table{{4, 4, 0.5}};
+    const Vec3 h(rng.uniform(0.2, 1), rng.uniform(0.2, 1), rng.uniform(0.2, 1));
+    const mink::Box box{h};
+    const double tilt = rng.uniform(0.1, 1.4);  // about the box's x axis: its x edges stay level
+    const double spin = rng.uniform(0, 2 * std::numbers::pi);
+    const double overlap = rng.log_uniform(1e-6, 0.02);
+    // Height of the lowest corners below the centre after the tilt: the bottom edge, (y, z) =
+    // (+-hy, -hz) turned by `tilt`, whichever is lower.
+    const double low = std::max(h.y() * std::sin(tilt) + h.z() * std::cos(tilt),
+                                -h.y() * std::sin(tilt) + h.z() * std::cos(tilt));
+    const Vec3 centre(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.5 + low - overlap);
+    const Quat q = about_z(spin) * Quat(Eigen::AngleAxisd(tilt, Vec3::UnitX()));
+    const Pose pt = scene.place(Vec3::Zero(), Quat::Identity());
+    const Pose pb = scene.place(centre, q);
+    const ManifoldResult r = mink::manifold(table, pt, box, pb);
+    ASSERT_EQ(r.status, mink::Status::Intersecting) << oracle::seed_note(601000 + k);
+    // The two lowest corners, by enumeration.
+    std::vector<Vec3> corners;
+    for (int i = 0; i < 8; ++i) {
+      const Vec3 local((i & 1 ? 1 : -1) * h.x(), (i & 2 ? 1 : -1) * h.y(),
+                       (i & 4 ? 1 : -1) * h.z());
+      const Vec3 in_scene = centre + q * local;
+      if (in_scene.z() < 0.5) corners.push_back(scene.frame.apply(in_scene));
+    }
+    ASSERT_EQ(corners.size(), 2u) << oracle::seed_note(601000 + k);
+    expect_points(r, corners, overlap, 1e-9 * 10);
+  }
+}
+
+TEST(ManifoldExact, CapsuleLyingOnBoxGivesItsSegmentEnds) {
+  for (int k = 0; k < 200; ++k) {
+    Rng rng(602000 + k);
+    const Scene scene = random_scene(rng);
+    const mink::Box table{{4, 4, 0.5}};
+    const mink::Capsule capsule{rng.uniform(0.05, 0.5), rng.uniform(0.1, 1.5)};
+    const double overlap = rng.log_uniform(1e-6, 0.02);
+    const double spin = rng.uniform(0, 2 * std::numbers::pi);
+    const Quat q = about_z(spin) * Quat(Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitX()));
+    const Vec3 centre(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.5 + capsule.radius - overlap);
+    const Pose pt = scene.place(Vec3::Zero(), Quat::Identity());
+    const Pose pb = scene.place(centre, q);
+    const ManifoldResult r = mink::manifold(table, pt, capsule, pb);
+    ASSERT_EQ(r.status, mink::Status::Intersecting) << oracle::seed_note(602000 + k);
+    // Segment ends: the capsule's axis is the scene's horizontal (-sin, cos, 0) turned by spin.
+    const Vec3 axis(-std::sin(spin), std::cos(spin), 0);
+    const Vec3 down(0, 0, -capsule.radius);
+    std::vector<Vec3> ends = {scene.frame.apply(centre + capsule.half_height * axis + down),
+                              scene.frame.apply(centre - capsule.half_height * axis + down)};
+    expect_points(r, ends, overlap, 1e-9 * 10);
+  }
+}
+
+TEST(ManifoldExact, CylinderStandingOnBoxGivesRimPoints) {
+  for (int k = 0; k < 200; ++k) {
+    Rng rng(603000 + k);
+    const Scene scene = random_scene(rng);
+    const mink::Box table{{4, 4, 0.5}};
+    const mink::Cylinder cylinder{rng.uniform(0.1, 1), rng.uniform(0.1, 1)};
+    const double overlap = rng.log_uniform(1e-6, 0.02);
+    const Vec3 centre(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.5 + cylinder.half_height - overlap);
+    const Pose pt = scene.place(Vec3::Zero(), Quat::Identity());
+    const Pose pb = scene.place(centre, about_z(rng.uniform(0, 7)));
+    const ManifoldResult r = mink::manifold(table, pt, cylinder, pb);
+    ASSERT_EQ(r.status, mink::Status::Intersecting) << oracle::seed_note(603000 + k);
+    ASSERT_EQ(r.count, 4);
+    const Vec3 bottom_centre = scene.frame.apply(centre - Vec3(0, 0, cylinder.half_height));
+    std::vector<Vec3> in_plane;
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 offset = r.points[i].point_b - bottom_centre;
+      // On the rim: in the bottom plane, at the radius.
+      EXPECT_NEAR(offset.dot(scene.up()), 0, 1e-9 * 10);
+      EXPECT_NEAR(offset.norm(), cylinder.radius, 1e-9 * 10);
+      EXPECT_NEAR(r.points[i].depth, overlap, 1e-9 * 10);
+      in_plane.push_back(offset);
+    }
+    // The four points span the rim: their quadrilateral is the inscribed square (area 2 r^2)
+    // when the reduction keeps the largest area.
+    double area = 0;
+    const Vec3 n = scene.up();
+    // Area of the convex hull of 4 points: max over the 3 pairings of the diagonals.
+    for (int d = 1; d < 4; ++d) {
+      const int o1 = d == 1 ? 2 : 1, o2 = 6 - d - o1;
+      const Vec3 diag1 = in_plane[d] - in_plane[0], diag2 = in_plane[o2] - in_plane[o1];
+      area = std::max(area, 0.5 * std::abs(diag1.cross(diag2).dot(n)));
+    }
+    EXPECT_GE(area, 0.95 * 2 * cylinder.radius * cylinder.radius) << oracle::seed_note(603000 + k);
+  }
+}
+
+TEST(ManifoldExact, HullFaceOnBoxFace) {
+  for (int k = 0; k < 200; ++k) {
+    Rng rng(604000 + k);
+    const Scene scene = random_scene(rng);
+    const mink::Box table{{4, 4, 0.5}};
+    // A pyramid on a base polygon of 3 to 6 corners (base at local z = 0, apex above), plus
+    // interior points, so the base face is the only face that can rest on the table.
+    const int corners = rng.integer(3, 6);
+    std::vector<Vec3> points;
+    const double radius = rng.uniform(0.3, 1);
+    const double phase = rng.uniform(0, 1);
+    for (int i = 0; i < corners; ++i) {
+      const double a = 2 * std::numbers::pi * (i + phase * 0.5) / corners;
+      points.push_back(Vec3(radius * std::cos(a), radius * std::sin(a), 0));
+    }
+    points.push_back(Vec3(0.1, -0.05, rng.uniform(0.3, 1.5)));
+    points.push_back(Vec3(0.05, 0.02, 0.1));  // interior
+    const auto hull = mink::Polytope::make(points);
+    ASSERT_TRUE(hull.has_value());
+    const double overlap = rng.log_uniform(1e-6, 0.02);
+    const double spin = rng.uniform(0, 7);
+    const Vec3 centre(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.5 - overlap);
+    const Pose pt = scene.place(Vec3::Zero(), Quat::Identity());
+    const Pose pb = scene.place(centre, about_z(spin));
+    const ManifoldResult r = mink::manifold(table, pt, hull.value(), pb);
+    ASSERT_EQ(r.status, mink::Status::Intersecting) << oracle::seed_note(604000 + k);
+    // Up to four of the base corners (the reduction keeps 4 of 5 or 6), each at the overlap.
+    ASSERT_EQ(r.count, std::min(corners, 4));
+    for (int i = 0; i < r.count; ++i) {
+      double best = 1e300;
+      for (int c = 0; c < corners; ++c)
+        best = std::min(best, (r.points[i].point_b - pb.apply(points[c])).norm());
+      EXPECT_LE(best, 1e-9 * 10) << oracle::seed_note(604000 + k);
+      EXPECT_NEAR(r.points[i].depth, overlap, 1e-9 * 10);
+    }
+    // And the same with the roles swapped: the normal flips, the points stay.
+    const ManifoldResult s = mink::manifold(hull.value(), pb, table, pt);
+    ASSERT_EQ(s.count, r.count);
+    EXPECT_LE((s.normal + r.normal).norm(), 1e-12);
+  }
+}
+
+TEST(ManifoldExact, SphereGivesOnePoint) {
+  Rng rng(605000);
+  const Scene scene = random_scene(rng);
+  const mink::Box table{{4, 4, 0.5}};
+  const mink::Sphere sphere{0.7};
+  const Pose pt = scene.place(Vec3::Zero(), Quat::Identity());
+  const Pose pb = scene.place(Vec3(0.3, -0.2, 0.5 + 0.7 - 0.01), rng.rotation());
+  const ManifoldResult r = mink::manifold(table, pt, sphere, pb);
+  ASSERT_EQ(r.count, 1);
+  EXPECT_NEAR(r.points[0].depth, 0.01, 1e-12);
+  EXPECT_LE((r.points[0].point_b - scene.frame.apply(Vec3(0.3, -0.2, 0.49))).norm(), 1e-9);
+}
+
+TEST(ManifoldExact, SpeculativePointsWithinTheMargin) {
+  for (int k = 0; k < 50; ++k) {
+    Rng rng(606000 + k);
+    const Scene scene = random_scene(rng);
+    const mink::Box table{{4, 3, 0.5}};
+    const Vec3 h(0.5, 0.4, 0.3);
+    const mink::Box box{h};
+    const double gap = rng.uniform(1e-4, 0.05);
+    const double angle = rng.uniform(0, 7);
+    const Vec3 centre(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.5 + h.z() + gap);
+    const Pose pt = scene.place(Vec3::Zero(), Quat::Identity());
+    const Pose pb = scene.place(centre, about_z(angle));
+    mink::ManifoldOptions options;
+    options.margin = 0.06;
+    const ManifoldResult r = mink::manifold(table, pt, box, pb, options);
+    ASSERT_EQ(r.status, mink::Status::Separated);
+    std::vector<Vec3> corners;
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 local((i & 1 ? 1 : -1) * h.x(), (i & 2 ? 1 : -1) * h.y(), -h.z());
+      corners.push_back(scene.frame.apply(centre + about_z(angle) * local));
+    }
+    expect_points(r, corners, -gap, 1e-9 * 10);
+    // Beyond the margin: no points.
+    options.margin = 0.5 * gap;
+    const ManifoldResult none = mink::manifold(table, pt, box, pb, options);
+    EXPECT_EQ(none.status, mink::Status::Separated);
+    EXPECT_EQ(none.count, 0);
+  }
+}
+
+TEST(ManifoldExact, BoxOnBoxStableUnderTinyRotations) {
+  // Equal boxes stacked corner on corner (the side planes coincide, the hardest case for the
+  // clipping) and a smaller box on a larger one; 1e-9 rotations about random axes must keep the
+  // same four points (within 1e-8) as the unperturbed pose.
+  for (int variant = 0; variant < 2; ++variant) {
+    const mink::Box lower{{0.5, 0.5, 0.5}};
+    const mink::Box upper{variant == 0 ? Vec3(0.5, 0.5, 0.5) : Vec3(0.3, 0.2, 0.25)};
+    const double overlap = 1e-3;
+    const Vec3 centre(0, 0, 0.5 + upper.half_extents.z() - overlap);
+    const Pose pl = Pose::identity();
+    const ManifoldResult base = mink::manifold(lower, pl, upper, Pose::from_translation(centre));
+    ASSERT_EQ(base.count, 4);
+    for (int k = 0; k < 1000; ++k) {
+      Rng rng(607000 + k);
+      const Quat tiny(Eigen::AngleAxisd(1e-9, rng.unit()));
+      const ManifoldResult r = mink::manifold(lower, pl, upper, Pose::from(centre, tiny));
+      ASSERT_EQ(r.count, 4) << oracle::seed_note(607000 + k);
+      for (int i = 0; i < 4; ++i) {
+        double best = 1e300;
+        for (int j = 0; j < 4; ++j)
+          best = std::min(best, (r.points[i].position() - base.points[j].position()).norm());
+        EXPECT_LE(best, 1e-8) << oracle::seed_note(607000 + k);
+      }
+    }
+  }
+}
+
+}  // namespace
