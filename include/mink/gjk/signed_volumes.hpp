@@ -43,7 +43,7 @@ constexpr S kFlatness =
     S(1e8) * std::numeric_limits<S>::epsilon() * std::numeric_limits<S>::epsilon();
 
 template <class S>
-SubSimplex<S> closest_on_vertex(const Vec3T<S>* w, int i) {
+[[gnu::always_inline]] inline SubSimplex<S> closest_on_vertex(const Vec3T<S>* w, int i) {
   SubSimplex<S> r;
   r.v = w[i];
   r.weights[i] = S(1);
@@ -53,7 +53,7 @@ SubSimplex<S> closest_on_vertex(const Vec3T<S>* w, int i) {
 }
 
 template <class S>
-SubSimplex<S> closest_on_segment(const Vec3T<S>* w, int i, int j) {
+[[gnu::always_inline]] inline SubSimplex<S> closest_on_segment(const Vec3T<S>* w, int i, int j) {
   const Vec3T<S> t = w[j] - w[i];
   const S tt = t.squaredNorm();
   const S proj = -w[i].dot(t);  // (0 - w_i).t: where the origin projects, times tt
@@ -70,7 +70,8 @@ SubSimplex<S> closest_on_segment(const Vec3T<S>* w, int i, int j) {
 }
 
 template <class S>
-void keep_closer(SubSimplex<S>& best, const SubSimplex<S>& candidate) {
+[[gnu::always_inline]] inline void keep_closer(SubSimplex<S>& best,
+                                               const SubSimplex<S>& candidate) {
   if (candidate.dist_sq < best.dist_sq) best = candidate;
 }
 
@@ -80,7 +81,8 @@ bool same_sign_or_zero(S x, S reference) {
 }
 
 template <class S>
-SubSimplex<S> closest_on_triangle(const Vec3T<S>* w, int i, int j, int k) {
+[[gnu::always_inline]] inline SubSimplex<S> closest_on_triangle(const Vec3T<S>* w, int i, int j,
+                                                                int k) {
   const Vec3T<S> e1 = w[j] - w[i];
   const Vec3T<S> e2 = w[k] - w[i];
   const Vec3T<S> n = e1.cross(e2);
@@ -188,7 +190,7 @@ SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
 
 /// The point of the simplex w[0..size) closest to the origin, with the sub-simplex that holds it.
 template <class S>
-SubSimplex<S> closest_of_simplex(const Vec3T<S>* w, int size) {
+[[gnu::always_inline]] inline SubSimplex<S> closest_of_simplex(const Vec3T<S>* w, int size) {
   switch (size) {
     case 1:
       return closest_on_vertex(w, 0);
@@ -213,7 +215,8 @@ struct KeptVertices {
 };
 
 template <class S>
-KeptVertices<S> vertices_to_keep(const SubSimplex<S>& r, const Vec3T<S>* w, int n) {
+[[gnu::always_inline]] inline KeptVertices<S> vertices_to_keep(const SubSimplex<S>& r,
+                                                               const Vec3T<S>* w, int n) {
   KeptVertices<S> kept;
   for (int i = 0; i < n; ++i) {
     if ((r.mask >> i & 1u) && r.weights[i] > S(0)) {
@@ -238,7 +241,7 @@ KeptVertices<S> vertices_to_keep(const SubSimplex<S>& r, const Vec3T<S>* w, int 
 /// Writes to `out` the smallest sub-simplex of `in` whose hull holds the point of `in` closest to
 /// the origin, with its weights, and returns that point. `in` and `out` may be the same simplex.
 template <class S>
-Vec3T<S> reduce_to_closest(const SimplexT<S>& in, SimplexT<S>& out) {
+[[gnu::always_inline]] inline Vec3T<S> reduce_to_closest(const SimplexT<S>& in, SimplexT<S>& out) {
   Vec3T<S> w[4];
   for (int i = 0; i < 4; ++i) w[i] = i < in.size ? in.vertices[i].w : Vec3T<S>::Zero();
   const KeptVertices<S> kept = vertices_to_keep(closest_of_simplex(w, in.size), w, in.size);
