@@ -24,7 +24,7 @@ mink_need() {
 MINK_BUILD_PACKAGES=(g++ cmake ninja-build libeigen3-dev libsimdjson-dev libcli11-dev libgtest-dev
   libcgal-dev libgmp-dev libmpfr-dev)
 # What the benchmarks add: the peers.
-MINK_BENCH_PACKAGES=(libbenchmark-dev libccd-dev libfcl-dev libbullet-dev python3)
+MINK_BENCH_PACKAGES=(libbenchmark-dev libccd-dev libfcl-dev libbullet-dev libqhull-dev python3)
 
 # Number of parallel build jobs.
 mink_jobs() { nproc 2>/dev/null || echo 2; }

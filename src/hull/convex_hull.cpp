@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "hull_faces.hpp"
+#include "interior_filter.hpp"
 #include "mink/hull/predicates.hpp"
 #include "triangle_hull.hpp"
 
@@ -40,6 +41,7 @@ double dot_up(const Vec3& n, const Vec3& x) {
 /// local / scale + n . shift (exact evaluation, then rounded up).
 double world_offset(const Frame& frame, const Vec3& n, double local) {
   using namespace exact;
+  if (frame.shift == Vec3::Zero()) return local / frame.scale;  // exact: a power of two
   const auto sum =
       add(add(add(scale(expansion(frame.shift[0]), n[0]), scale(expansion(frame.shift[1]), n[1])),
               scale(expansion(frame.shift[2]), n[2])),
@@ -397,13 +399,38 @@ Expected<ConvexHull> build_convex_hull(std::span<const Vec3> points, const HullO
 
   // ---- Full ----
   const int d = -s_lo > s_hi ? d_lo : d_hi;
-  const int simplex[4] = {a, b, c, d};
+  int simplex[4] = {a, b, c, d};
+  // Points that cannot be vertices are dropped first (a complete build only: a stopped one
+  // reports how far remaining points are outside). The simplex points are extreme, so kept.
+  // The points left are copied in a spatial order (only speed depends on it).
+  std::vector<int> kept;
+  if (options.max_vertices == 0) {
+    kept = detail::hull_candidates(q);
+  } else {
+    kept.resize(n);
+    std::iota(kept.begin(), kept.end(), 0);
+  }
+  for (const int v : simplex) {
+    if (!std::binary_search(kept.begin(), kept.end(), v))
+      return fail("internal error: a simplex point was dropped");
+  }
+  detail::sort_spatially(q, kept);
+  std::vector<Vec3> hull_q(kept.size());
+  {
+    std::vector<int> position(n, -1);
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+      hull_q[i] = q[static_cast<std::size_t>(kept[i])];
+      position[static_cast<std::size_t>(kept[i])] = static_cast<int>(i);
+    }
+    for (int& v : simplex) v = position[static_cast<std::size_t>(v)];
+  }
   detail::TriangleHull triangles;
-  if (!detail::build_triangle_hull(q, simplex, options.max_vertices, triangles, error))
+  if (!detail::build_triangle_hull(hull_q, simplex, options.max_vertices, triangles, error))
     return fail("internal error: " + error);
   detail::PolygonFaces faces;
-  if (!detail::build_polygon_faces(q, triangles, tol, faces, error))
+  if (!detail::build_polygon_faces(hull_q, triangles, tol, faces, error))
     return fail("internal error: " + error);
+  for (int& v : faces.loop) v = kept[static_cast<std::size_t>(v)];
   hull.status = HullStatus::Full;
   hull.complete = triangles.complete;
   hull.max_outside = faces.max_outside / frame.scale;

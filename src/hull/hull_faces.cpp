@@ -478,6 +478,11 @@ bool FaceBuilder::run(PolygonFaces& out, std::string& error) {
       const Vec3& w = q_[static_cast<std::size_t>(origin(prev_he(g)))];
       const Vec3 ab = b - a, af = f - a, aw = w - a, bf = f - b, bw = w - b;
       const double volume6 = std::fabs(ab.dot(af.cross(aw)));
+      // Every cross product below is at most the squared longest edge: most edges are decided
+      // by that bound (with room for rounding) without the seven products.
+      const double longest2 = std::max({ab.squaredNorm(), af.squaredNorm(), aw.squaredNorm(),
+                                        bf.squaredNorm(), bw.squaredNorm(), (w - f).squaredNorm()});
+      if (volume6 > 2 * tol_ * longest2 * (1 + 1e-12)) continue;
       const double widest = std::max({ab.cross(af).norm(), ab.cross(aw).norm(), af.cross(aw).norm(),
                                       bf.cross(bw).norm(), ab.cross(w - f).norm(),
                                       af.cross(bw).norm(), aw.cross(bf).norm()});

@@ -5,7 +5,8 @@
 // by one simple loop (the horizon), the new faces joining the point to that loop are never
 // degenerate, and a point of a removed face's conflict list that is above none of the new faces
 // is inside the new hull. Floating-point distances only choose which point comes next (the
-// farthest beyond its face, over all faces), which affects speed, never correctness. The code
+// farthest beyond the newest face with conflicts, or beyond any face when max_vertices may stop
+// the build early), which affects speed, never correctness. The code
 // still checks the horizon loop and stops with an error rather than build on a broken mesh.
 #include "triangle_hull.hpp"
 
@@ -32,6 +33,7 @@ struct Face {
   int twin[3];
   double n[3];   // (b - a) x (c - a), rounded
   double pm[3];  // per component: |products| whose difference gave n, for the filter
+  double bound;  // the filter's bound for the farthest any point can be (see side())
   double inv_len;
   int furthest;
   double furthest_dist;
@@ -90,6 +92,8 @@ class Builder {
     const double len =
         std::sqrt(face.n[0] * face.n[0] + face.n[1] * face.n[1] + face.n[2] * face.n[2]);
     face.inv_len = len > 0 ? 1 / len : 0;
+    face.bound =
+        9 * kU * (reach_[0] * face.pm[0] + reach_[1] * face.pm[1] + reach_[2] * face.pm[2]);
     return f;
   }
 
@@ -103,10 +107,18 @@ class Builder {
 
   /// Exact side of point i against face f: > 0 strictly outside (then `dist` is its distance
   /// beyond the plane, >= 0), 0 on the plane, < 0 inside.
+  /// The face's own bound (f.bound) is the point's bound below with |x - a| replaced by its
+  /// largest possible value per axis (reach_): computed with the same operations on larger
+  /// non-negative terms, it is never smaller, so it decides most points with one comparison.
   int side(const Face& f, const double* x, double& dist) const {
     const double* a = p(f.v[0]);
     const double wx = x[0] - a[0], wy = x[1] - a[1], wz = x[2] - a[2];
     const double det = wx * f.n[0] + wy * f.n[1] + wz * f.n[2];
+    if (det > f.bound) {
+      dist = det * f.inv_len;
+      return 1;
+    }
+    if (det < -f.bound) return -1;
     const double bound =
         9 * kU * (std::fabs(wx) * f.pm[0] + std::fabs(wy) * f.pm[1] + std::fabs(wz) * f.pm[2]);
     if (det > bound) {
@@ -128,7 +140,10 @@ class Builder {
     }
   }
 
-  /// Puts point i in the conflict list of the candidate face it is farthest beyond, if any.
+  /// Puts point c in the conflict list of a candidate face it is strictly beyond, if any: the
+  /// first one found for a complete build (as Qhull does: any face that sees the point is a
+  /// valid owner, and stopping at the first halves the tests), the farthest one when
+  /// max_vertices may stop the build (furthest-first then picks the points that matter most).
   void assign(const Conflict& c, const int* candidates, std::size_t count) {
     int best = -1;
     double best_dist = 0;
@@ -138,14 +153,33 @@ class Builder {
           (best < 0 || d > best_dist)) {
         best = candidates[k];
         best_dist = d;
+        if (max_vertices_ == 0) break;
       }
     }
     if (best >= 0) add_outside(best, c, best_dist);
   }
 
+  /// Furthest first over all faces only when the build may stop early (max_vertices): then
+  /// the order decides which vertices the hull keeps. A complete build takes the newest face
+  /// first instead, whose conflict points and neighbours are still in cache; the order only
+  /// changes the speed, since the result is the exact hull either way.
   void enqueue(int f) {
     const Face& face = faces_[static_cast<std::size_t>(f)];
-    if (!face.outside.empty()) heap_.push({face.furthest_dist, f, face.stamp});
+    if (face.outside.empty()) return;
+    if (max_vertices_ != 0) {
+      heap_.push({face.furthest_dist, f, face.stamp});
+    } else {
+      stack_faces_.push_back({face.furthest_dist, f, face.stamp});
+    }
+  }
+  bool pending_empty() const { return max_vertices_ != 0 ? heap_.empty() : stack_faces_.empty(); }
+  QueueEntry pending_top() const { return max_vertices_ != 0 ? heap_.top() : stack_faces_.back(); }
+  void pending_pop() {
+    if (max_vertices_ != 0) {
+      heap_.pop();
+    } else {
+      stack_faces_.pop_back();
+    }
   }
 
   bool add_point(int apex, int start_face, int iteration, std::string& error);
@@ -155,16 +189,17 @@ class Builder {
   std::vector<Face> faces_;
   std::vector<int> free_;
   std::priority_queue<QueueEntry> heap_;
+  std::vector<QueueEntry> stack_faces_;
   std::size_t vertex_count_ = 0;
 
   // Scratch, reused across iterations.
   std::vector<int> visible_, stack_, horizon_, created_;
-  std::vector<Conflict> pending_;
   struct HorizonEdge {
     int from, to, kept;  // kept: the half-edge of the face that stays
   };
   std::vector<HorizonEdge> loop_;
   std::vector<int> vertex_stamp_, vertex_next_, vertex_seen_;
+  double reach_[3] = {0, 0, 0};  // per axis: twice the largest |coordinate|, >= any |x - a|
 };
 
 bool Builder::run(const int simplex[4], TriangleHull& out, std::string& error) {
@@ -172,6 +207,10 @@ bool Builder::run(const int simplex[4], TriangleHull& out, std::string& error) {
   vertex_stamp_.assign(n, 0);
   vertex_next_.assign(n, -1);
   vertex_seen_.assign(n, 0);
+  faces_.reserve(2 * n + 4);  // live faces never exceed 2 n - 4: few moves of conflict lists
+  for (const Vec3& x : q_) {
+    for (int k = 0; k < 3; ++k) reach_[k] = std::max(reach_[k], 2 * std::fabs(x[k]));
+  }
 
   int a = simplex[0], b = simplex[1], c = simplex[2], d = simplex[3];
   const int o = exact::orient3d(p(a), p(b), p(c), p(d));
@@ -213,18 +252,18 @@ bool Builder::run(const int simplex[4], TriangleHull& out, std::string& error) {
   // a vertex or is found inside, and never returns, so n iterations always suffice.
   bool complete = true;
   int iteration = 0;
-  while (!heap_.empty()) {
-    const QueueEntry top = heap_.top();
+  while (!pending_empty()) {
+    const QueueEntry top = pending_top();
     const Face& face = faces_[static_cast<std::size_t>(top.face)];
     if (!face.alive || face.stamp != top.stamp || face.outside.empty()) {
-      heap_.pop();
+      pending_pop();
       continue;
     }
     if (max_vertices_ != 0 && vertex_count_ >= max_vertices_) {
       complete = false;
       break;
     }
-    heap_.pop();
+    pending_pop();
     if (++iteration > static_cast<int>(n)) {
       error = "iteration cap reached";
       return false;
@@ -332,16 +371,8 @@ bool Builder::add_point(int apex, int start_face, int iteration, std::string& er
   }
   vertex_count_ = vertex_count_ + 1 - static_cast<std::size_t>(removed);
 
-  // 4. Collect the conflict points of the visible faces, then free them.
-  pending_.clear();
-  for (const int f : visible_) {
-    for (const Conflict& c : faces_[static_cast<std::size_t>(f)].outside) {
-      if (c.index != apex) pending_.push_back(c);
-    }
-    free_face(f);
-  }
-
-  // 5. The cone from the apex to the horizon, stitched to the kept faces and to itself.
+  // 4. The cone from the apex to the horizon, stitched to the kept faces and to itself. The
+  // visible faces are still intact (their slots are freed in step 5).
   created_.clear();
   for (const HorizonEdge& e : loop_) created_.push_back(new_face(e.from, e.to, apex));
   const std::size_t m = created_.size();
@@ -355,8 +386,14 @@ bool Builder::add_point(int apex, int start_face, int iteration, std::string& er
     face.twin[2] = 3 * created_[(i + m - 1) % m] + 1;
   }
 
-  // 6. Hand the conflict points to the new faces; those above none are inside for good.
-  for (const Conflict& c : pending_) assign(c, created_.data(), m);
+  // 5. Hand the conflict points of the visible faces to the new faces (those above none are
+  // inside for good), straight from their lists, then free the visible faces.
+  for (const int f : visible_) {
+    for (const Conflict& c : faces_[static_cast<std::size_t>(f)].outside) {
+      if (c.index != apex) assign(c, created_.data(), m);
+    }
+    free_face(f);
+  }
   for (const int f : created_) enqueue(f);
   return true;
 }

@@ -36,6 +36,8 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <utility>
 
 namespace mink::exact {
@@ -348,7 +350,65 @@ inline int orient2d_exact(const double* a, const double* b, const double* c, int
   return sign(sub(mul(ux, vy), mul(uy, vx)));
 }
 
+namespace detail {
+
+/// Half the distance from a normal double r != 0 to its nearer neighbour (exact), or 0 when r
+/// is too small for that to be a normal double.
+inline double half_gap(double r) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &r, sizeof bits);
+  const int e = static_cast<int>((bits >> 52) & 0x7ff);
+  const bool power_of_two = (bits & ((std::uint64_t{1} << 52) - 1)) == 0;
+  // r in [2^(e-1023), 2^(e-1022)): gaps of 2^(e-1075) above, and below unless r is a power of
+  // two (then half that); half of the smaller one is 2^(e-1076) or 2^(e-1077).
+  const int f = e - 53 - (power_of_two ? 1 : 0);
+  if (e == 0x7ff || f < 1) return 0;
+  const std::uint64_t g = static_cast<std::uint64_t>(f) << 52;
+  double out;
+  std::memcpy(&out, &g, sizeof out);
+  return out;
+}
+
+/// Component k of u x v for u = uh + ul, v = vh + vl (exact differences), rounded to nearest,
+/// when a double-double evaluation settles the rounding; false otherwise. The value
+/// u_i v_j - u_j v_i is taken as s + lo: s and the errors of the leading products are exact
+/// (two_product, two_diff); the cross terms uh vl + ul vh are rounded and ul vl is dropped,
+/// all of relative size u, so with M = |uh_i vh_j| + |uh_j vh_i| the total error is below
+/// 14 u^2 M (+ O(u^3 M)); 40 u^2 M is used. With r = fl(s + lo) and s + lo = r + re exactly,
+/// r is the nearest double to the exact value when |re| + error is below half the gap from r
+/// to its nearer neighbour.
+inline bool cross_component_fast(const double* uh, const double* ul, const double* vh,
+                                 const double* vl, int k, double& out) {
+  const int i = (k + 1) % 3, j = (k + 2) % 3;
+  double p1, p2, q1, q2, s, se, r, re;
+  two_product(uh[i], vh[j], p1, p2);
+  two_product(uh[j], vh[i], q1, q2);
+  const double tp = uh[i] * vl[j] + ul[i] * vh[j];
+  const double tq = uh[j] * vl[i] + ul[j] * vh[i];
+  two_diff(p1, q1, s, se);
+  const double lo = se + (p2 - q2) + (tp - tq);
+  two_sum(s, lo, r, re);
+  const double err = 40 * kUnitRoundoff * kUnitRoundoff * (std::fabs(p1) + std::fabs(q1));
+  if (r != 0 && std::fabs(re) + err < half_gap(r)) {
+    out = r;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace detail
+
 inline void cross_rounded(const double* a, const double* b, const double* c, double* out) {
+  // Most triangles: a double-double evaluation whose rounding is provably the exact value's.
+  double uh[3], ul[3], vh[3], vl[3];
+  for (int k = 0; k < 3; ++k) {
+    two_diff(b[k], a[k], uh[k], ul[k]);
+    two_diff(c[k], a[k], vh[k], vl[k]);
+  }
+  bool fast = true;
+  for (int k = 0; k < 3 && fast; ++k)
+    fast = detail::cross_component_fast(uh, ul, vh, vl, k, out[k]);
+  if (fast) return;
   Expansion<2> u[3], v[3];
   for (int k = 0; k < 3; ++k) {
     u[k] = difference(b[k], a[k]);

@@ -158,4 +158,42 @@ TEST(HullPredicates, ExpansionArithmeticIsExact) {
   EXPECT_DOUBLE_EQ(n[2], 1 * 3e-17 - 1e-17 * 2);
 }
 
+TEST(HullPredicates, CrossRoundedIsWithinOneUlpOfIntegerCross) {
+  // Coordinates k 2^-s with |k| < 2^29: each cross component is an exact integer (< 2^61) times
+  // 2^-2s, so __int128 gives it exactly; cross_rounded must be within one unit in the last
+  // place of it (the double-double fast path gives the nearest double, the exact path at most
+  // one unit off). Generic triangles take the fast path, near-degenerate ones the exact one.
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<long long> coord(-(1LL << 28), 1LL << 28);
+  std::uniform_int_distribution<long long> nudge(-3, 3);
+  const int s = 20;
+  for (int it = 0; it < 20000; ++it) {
+    Scaled a = scaled(coord(rng), coord(rng), coord(rng), s);
+    Scaled b = scaled(coord(rng), coord(rng), coord(rng), s);
+    Scaled c = scaled(coord(rng), coord(rng), coord(rng), s);
+    if (it % 2 == 1) {  // c nearly on the line ab
+      c = scaled(a.k[0] + 2 * (b.k[0] - a.k[0]) / 3 + nudge(rng),
+                 a.k[1] + 2 * (b.k[1] - a.k[1]) / 3 + nudge(rng),
+                 a.k[2] + 2 * (b.k[2] - a.k[2]) / 3 + nudge(rng), s);
+    }
+    double n[3];
+    mink::exact::cross_rounded(a.v, b.v, c.v, n);
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      const i128 exact =
+          i128(b.k[i] - a.k[i]) * (c.k[j] - a.k[j]) - i128(b.k[j] - a.k[j]) * (c.k[i] - a.k[i]);
+      // The exact value, held exactly by a long double (64-bit significand).
+      const long double value = std::ldexp(static_cast<long double>(exact), -2 * s);
+      const double below = static_cast<double>(value);
+      const long double err = std::fabs(static_cast<long double>(n[k]) - value);
+      const long double ulp = std::fabs(static_cast<long double>(std::nextafter(below, HUGE_VAL)) -
+                                        static_cast<long double>(below));
+      EXPECT_LE(err, ulp * 1.0001L) << "component " << k << " of triangle " << it;
+      if (exact == 0) {
+        EXPECT_EQ(n[k], 0.0);
+      }
+    }
+  }
+}
+
 }  // namespace
