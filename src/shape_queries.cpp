@@ -18,12 +18,24 @@ struct PolytopeRef {
   const char* error() const { return polytope->error(); }
 };
 
+/// A hull shape held by pointer: support climbs from the shape's shared hint.
+struct HullRef {
+  using Scalar = double;
+  const ConvexHullShape* hull;
+  Vec3 support_core(const Vec3& d) const { return hull->support_core(d); }
+  double core_radius() const { return 0; }
+  double bounding_radius() const { return hull->bounding_radius(); }
+  const char* error() const { return hull->error(); }
+};
+
 template <class Fn>
 auto with_concrete(const Shape& shape, Fn&& fn) {
   return std::visit(
       [&](const auto& core) {
         if constexpr (std::is_same_v<std::decay_t<decltype(core)>, SharedPolytope>)
           return fn(Rounded<PolytopeRef>{PolytopeRef{core.get()}, shape.core_radius()});
+        else if constexpr (std::is_same_v<std::decay_t<decltype(core)>, SharedHull>)
+          return fn(Rounded<HullRef>{HullRef{core.get()}, shape.core_radius()});
         else
           return fn(Rounded<std::decay_t<decltype(core)>>{core, shape.core_radius()});
       },

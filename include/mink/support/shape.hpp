@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "mink/shapes/cone.hpp"
 #include "mink/shapes/cylinder.hpp"
 #include "mink/shapes/ellipsoid.hpp"
+#include "mink/shapes/hull_shape.hpp"
 #include "mink/shapes/point.hpp"
 #include "mink/shapes/polytope.hpp"
 #include "mink/shapes/segment.hpp"
@@ -28,11 +30,19 @@
 
 namespace mink {
 
-/// Polytopes are shared, not copied, when a Shape is copied.
+/// Polytopes and hulls are shared, not copied, when a Shape is copied.
 using SharedPolytope = std::shared_ptr<const Polytope>;
+using SharedHull = std::shared_ptr<const ConvexHullShape>;
 
 /// The primitive cores a Shape is made of. Every alternative has radius 0.
-using Core = std::variant<Point, Segment, Triangle, Box, Cylinder, Cone, Ellipsoid, SharedPolytope>;
+using Core = std::variant<Point, Segment, Triangle, Box, Cylinder, Cone, Ellipsoid, SharedPolytope,
+                          SharedHull>;
+
+namespace detail {
+template <class T>
+inline constexpr bool kSharedCore =
+    std::is_same_v<T, SharedPolytope> || std::is_same_v<T, SharedHull>;
+}  // namespace detail
 
 class Shape {
  public:
@@ -48,7 +58,18 @@ class Shape {
   static Expected<Shape> point(const Vec3& p);
   static Expected<Shape> segment(const Vec3& a, const Vec3& b);
   static Expected<Shape> triangle(const Vec3& a, const Vec3& b, const Vec3& c);
+  /// The convex hull of `points`, support by scanning them (Polytope): no set-up cost, the right
+  /// choice for a shape used in a few queries. Errors: no points, a NaN or infinite coordinate.
   static Expected<Shape> polytope(std::span<const Vec3> points);
+  /// The convex hull of the same points as a ConvexHullShape (hull built once, support by
+  /// climbing): the polytope -> hull path for shapes kept across many queries. Same support values
+  /// as polytope() up to the hull's tolerance (shapes/hull_shape.hpp, "Accuracy"). Building costs
+  /// about as much as 4,000 scans of the points (docs/architecture.md, "Hull shape"), so it pays
+  /// off after roughly 100 queries of a large set, never in a one-off query. Errors: as
+  /// build_convex_hull.
+  static Expected<Shape> convex_hull(std::span<const Vec3> points);
+  /// A hull shape from a built hull (for instance with HullOptions::max_vertices).
+  static Expected<Shape> convex_hull(const ConvexHull& hull);
   /// Minkowski sum ("sweep") of two shapes in the same frame.
   static Expected<Shape> sum(const Shape& a, const Shape& b);
   /// The shape grown by `margin` ("collision skin").
@@ -72,7 +93,7 @@ class Shape {
 inline Vec3 support_core(const Core& core, const Vec3& d) {
   return std::visit(
       [&d](const auto& c) -> Vec3 {
-        if constexpr (std::is_same_v<std::decay_t<decltype(c)>, SharedPolytope>)
+        if constexpr (detail::kSharedCore<std::decay_t<decltype(c)>>)
           return c->support_core(d);
         else
           return c.support_core(d);

@@ -1,0 +1,398 @@
+/// @file hull_shape.hpp
+/// ConvexHullShape: a convex polytope given by its hull (vertices and vertex adjacency), whose
+/// support climbs the vertex graph from the previous answer instead of scanning every point.
+///
+/// Support by hill climbing. From a start vertex, move to the neighbour with the largest dot
+/// product with d as long as it is strictly larger; stop when no neighbour is. On the vertex-edge
+/// graph of a convex polytope a vertex that no neighbour beats is a global maximum (the polytope
+/// lies in the cone spanned by the edges leaving that vertex), so the climb ends on a support
+/// point. Only strictly better moves are taken, so the dot product grows at every step: no vertex
+/// is visited twice and the climb cannot cycle on a plateau (equal dot products). The number of
+/// moves is still capped at the vertex count, and a climb that hits the cap falls back to the scan.
+///
+/// Accuracy. The hull's faces are flat within ConvexHull::tolerance (nearly coplanar facets are
+/// merged), so the graph is the edge graph of a polytope within that tolerance of the exact hull
+/// of the vertices: the climb's support value is within `tolerance * |d|` (plus the rounding of a
+/// dot product, a few eps |p| |d|) of the maximum over the input points, and equal to it when
+/// the merged faces are exactly coplanar (the usual case for points in general position and for
+/// exact lattices). Input points that are not hull vertices are never returned.
+///
+/// Ties. The answer depends on d only, not on where the climb started: when the climb stops on a
+/// vertex with neighbours of equal dot product (a face or edge facing d), it collects that
+/// plateau (up to kHullPlateauLimit vertices, then it scans) and returns its lowest vertex index.
+/// So warm starts, and races on the hint below, change the cost of a query but not its result.
+///
+/// Start vertex. Collision queries on one shape ask for support along slowly turning directions
+/// (GJK iterations, then the next simulation step), so the previous answer (the hint) is a few
+/// moves from the next one. But a shape shared by many bodies, or queried as A and as B, sees
+/// directions jump, so when the hint is not the answer the climb also looks up a start in a
+/// direction table (6 k^2 cells of the cube of directions, each holding its centre's answer, k
+/// about sqrt(n / 24)) and jumps there if it is higher than the hint's best neighbour: a cold
+/// query starts a step or two from its answer, a warm one that needs no move skips the table.
+/// The hint lives in the shape as a relaxed `std::atomic<std::uint32_t>` on its own cache line:
+/// support is `const` and shapes are shared between threads, any start is correct (see Ties) so a
+/// race between threads only changes a start, and a relaxed 32-bit load and store compile to
+/// plain moves. The store is skipped when the answer equals the hint. Alternatives rejected: a
+/// `thread_local` map from shape to hint costs a lookup as long as the climb itself; a hint held by
+/// the caller (for instance in GjkCache) would be best, but needs the support concept to take it
+/// (climb_index(d, start) is that entry point, ready for it).
+///
+/// Layout. Positions twice: three arrays for the scan, and per vertex a record (position, edge
+/// range); the edges (CSR adjacency) carry their end vertex's position and edge range inline, so a
+/// climb step reads one contiguous run of about six 40-byte edges and nothing else. About 300
+/// bytes per vertex in double.
+///
+/// Small hulls scan. Below kHullClimbMinVertices vertices the vectorised scan of
+/// shapes/support_scan.hpp is faster than climbing (measured in bench/hull_support_bench.cpp,
+/// table below), and it keeps the same tie rule (lowest index among the farthest), so the shape
+/// scans its vertices there.
+///
+/// Lower-dimensional hulls (HullStatus): Flat hulls climb their polygon (each vertex's two
+/// neighbours), Segment hulls their two ends, a Point hull has one vertex: the same loop serves
+/// all.
+///
+/// Units: positions in the caller's length unit, in the shape's local frame; radius 0.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "mink/expected.hpp"
+// HullStatus's enumerators Point and Segment trip GCC's -Wshadow against the shape aliases of
+// the same names when this header comes after shapes/point.hpp: harmless (a scoped enum), so the
+// warning is silenced for that one include.
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+#endif
+#include "mink/hull/convex_hull.hpp"
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+#include "mink/shapes/shape_common.hpp"
+#include "mink/shapes/support_scan.hpp"
+
+namespace mink {
+
+/// Hulls with fewer vertices than this scan them (shapes/support_scan.hpp); larger ones climb.
+/// Measured with bench/hull_support_bench.cpp (Release, SSE2, points on a sphere, every point a
+/// vertex; ns per query, CPU time, median of 5, 2-core machine under load, so +-30%): warm = the
+/// direction turns 0.02 rad per query, cold = random directions; support_index (hint, then
+/// table) from 64 vertices, climb_index from the previous answer below (support_index scans there).
+///
+///   vertices      16    24    32    48    64    96   128   256  1024  4096
+///   scan         9.7  11.7  14.7  19.3  26.8  42.2  57.5   103   323  1200
+///   climb warm  11.1   8.2   7.3   8.3   7.4   7.4   5.8  14.9   8.4  22.2
+///   climb cold     -     -     -     -  41.8  39.7  41.9  44.3  51.7  61.6
+///
+/// Warm climbing wins from about 24 vertices, cold from about 96; at 64 warm queries are 2-4x
+/// faster than the scan and cold ones at most 1.6x slower. Full table: docs/architecture.md.
+inline constexpr std::size_t kHullClimbMinVertices = 64;
+
+/// The largest plateau (vertices of equal support value) the climb collects to break a tie; a
+/// larger one is resolved by the scan, with the same answer.
+inline constexpr std::size_t kHullPlateauLimit = 32;
+
+template <class S>
+class ConvexHullShapeT {
+ public:
+  using Scalar = S;
+
+  /// The shape of a hull built by build_convex_hull (any status; an incomplete hull, built with
+  /// max_vertices, gives the shape of the vertices it kept). Error when the hull has no vertex or
+  /// its adjacency is inconsistent (which would be a bug of the hull builder).
+  static Expected<ConvexHullShapeT> make(const ConvexHull& hull) {
+    using Result = Expected<ConvexHullShapeT>;
+    const std::size_t n = hull.vertices.size();
+    if (n == 0) return Result::failure("convex hull has no vertices");
+    const auto& offsets = hull.neighbor_offsets;
+    if (n > std::numeric_limits<std::uint32_t>::max() / 2 || offsets.size() != n + 1 ||
+        offsets.front() != 0 || offsets.back() != hull.neighbors.size())
+      return Result::failure("convex hull adjacency is inconsistent");
+    ConvexHullShapeT shape;
+    shape.status_ = hull.status;
+    shape.tolerance_ = S(hull.tolerance);
+    shape.x_.resize(n);
+    shape.y_.resize(n);
+    shape.z_.resize(n);
+    shape.nodes_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3T<S> p = hull.vertices[i].position.template cast<S>();
+      if (!is_finite(p)) return Result::failure("convex hull vertex is not finite");
+      if (offsets[i + 1] < offsets[i])
+        return Result::failure("convex hull adjacency is inconsistent");
+      shape.x_[i] = p.x();
+      shape.y_[i] = p.y();
+      shape.z_[i] = p.z();
+      shape.nodes_[i] = Node{{p.x(), p.y(), p.z()}, offsets[i], offsets[i + 1]};
+      shape.bounding_radius_ = std::max(shape.bounding_radius_, p.norm());
+    }
+    shape.edges_.resize(hull.neighbors.size());
+    for (std::size_t k = 0; k < hull.neighbors.size(); ++k) {
+      const std::uint32_t u = hull.neighbors[k];
+      if (u >= n) return Result::failure("convex hull adjacency is inconsistent");
+      const Node& to = shape.nodes_[u];
+      shape.edges_[k] = Edge{{to.p[0], to.p[1], to.p[2]}, u, to.begin, to.end};
+    }
+    shape.climbs_ = n >= kHullClimbMinVertices;
+    if (shape.climbs_) shape.build_seeds();
+    return shape;
+  }
+
+  /// The shape of the convex hull of `points` (see build_convex_hull for the errors and options).
+  static Expected<ConvexHullShapeT> make(std::span<const Vec3T<S>> points,
+                                         const HullOptions& options = {}) {
+    Expected<ConvexHull> hull = [&] {
+      if constexpr (std::is_same_v<S, double>) {
+        return build_convex_hull(points, options);
+      } else {
+        std::vector<Vec3> wide(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) wide[i] = points[i].template cast<double>();
+        return build_convex_hull(wide, options);
+      }
+    }();
+    if (!hull) return Expected<ConvexHullShapeT>::failure(hull.error());
+    return make(*hull);
+  }
+
+  // The atomic hint is neither copyable nor movable: copy its value with the rest.
+  ConvexHullShapeT(const ConvexHullShapeT& o) { *this = o; }
+  ConvexHullShapeT(ConvexHullShapeT&& o) noexcept { *this = std::move(o); }
+  ConvexHullShapeT& operator=(const ConvexHullShapeT& o) {
+    if (this != &o) {
+      x_ = o.x_;
+      y_ = o.y_;
+      z_ = o.z_;
+      nodes_ = o.nodes_;
+      edges_ = o.edges_;
+      seeds_ = o.seeds_;
+      copy_scalars(o);
+    }
+    return *this;
+  }
+  ConvexHullShapeT& operator=(ConvexHullShapeT&& o) noexcept {
+    if (this != &o) {
+      x_ = std::move(o.x_);
+      y_ = std::move(o.y_);
+      z_ = std::move(o.z_);
+      nodes_ = std::move(o.nodes_);
+      edges_ = std::move(o.edges_);
+      seeds_ = std::move(o.seeds_);
+      copy_scalars(o);
+    }
+    return *this;
+  }
+  ~ConvexHullShapeT() = default;
+
+  /// Number of hull vertices.
+  std::size_t size() const { return nodes_.size(); }
+  Vec3T<S> point(std::size_t i) const { return {x_[i], y_[i], z_[i]}; }
+  HullStatus status() const { return status_; }
+  /// The hull's flatness tolerance (input units): the bound on the climb's error, see above.
+  S tolerance() const { return tolerance_; }
+  /// True when support climbs (at least kHullClimbMinVertices vertices), false when it scans.
+  bool climbs() const { return climbs_; }
+
+  Vec3T<S> support_core(const Vec3T<S>& d) const { return point(support_index(d)); }
+  S core_radius() const { return S(0); }
+  S bounding_radius() const { return bounding_radius_; }
+  const char* error() const {
+    return nodes_.empty() ? "convex hull shape has no vertices" : nullptr;
+  }
+
+  /// Index of a vertex farthest along d (thread-safe). The climb starts from the previous answer
+  /// (the hint); when that is not the answer, it jumps to the direction table's seed for d if the
+  /// seed is higher than the hint's best neighbour. A warm query that needs no move thus costs
+  /// no table lookup.
+  std::size_t support_index(const Vec3T<S>& d) const {
+    if (!climbs_) return scan_index(d);
+    const std::uint32_t hint = hint_.load(std::memory_order_relaxed);
+    const std::uint32_t v = climb<true>(d, hint, dot(nodes_[hint].p, d.x(), d.y(), d.z()));
+    if (v != hint) hint_.store(v, std::memory_order_relaxed);
+    return v;
+  }
+
+  /// The climb from vertex `start` (< size()), without hint or seed: the same answer as
+  /// support_index for every start. NaN directions return `start`.
+  std::uint32_t climb_index(const Vec3T<S>& d, std::uint32_t start) const {
+    return climb<false>(d, start, dot(nodes_[start].p, d.x(), d.y(), d.z()));
+  }
+
+  /// The brute-force answer: lowest index among the vertices farthest along d.
+  std::size_t scan_index(const Vec3T<S>& d) const {
+    return detail::support_index(x_.data(), y_.data(), z_.data(), x_.size(), d.x(), d.y(), d.z());
+  }
+
+  /// The start the direction table gives for d: the answer for the centre of d's cell (0 for a
+  /// zero or non-finite direction, and for shapes that scan).
+  std::uint32_t seed_index(const Vec3T<S>& d) const {
+    if (seeds_.empty()) return 0;
+    int axis = 0;
+    S a[3] = {std::abs(d.x()), std::abs(d.y()), std::abs(d.z())};
+    if (a[1] > a[axis]) axis = 1;
+    if (a[2] > a[axis]) axis = 2;
+    if (!(a[axis] > S(0)) || !(a[axis] <= std::numeric_limits<S>::max())) return 0;
+    const S inv = S(1) / a[axis];
+    const std::size_t face = std::size_t(2 * axis + (d[axis] < S(0) ? 1 : 0));
+    const std::size_t cu = cell(d[(axis + 1) % 3] * inv), cv = cell(d[(axis + 2) % 3] * inv);
+    return seeds_[(face * seed_cells_ + cu) * seed_cells_ + cv];
+  }
+
+ private:
+  /// A vertex: its position and the range of its edges in edges_.
+  struct Node {
+    S p[3];
+    std::uint32_t begin, end;
+  };
+  /// An edge from a vertex to a neighbour, with the neighbour's position and edge range inline,
+  /// so a climb step reads its vertex's edges in one sequential run and no other memory.
+  struct Edge {
+    S p[3];
+    std::uint32_t to, begin, end;
+  };
+
+  ConvexHullShapeT() = default;
+
+  void copy_scalars(const ConvexHullShapeT& o) {
+    status_ = o.status_;
+    climbs_ = o.climbs_;
+    seed_cells_ = o.seed_cells_;
+    tolerance_ = o.tolerance_;
+    bounding_radius_ = o.bounding_radius_;
+    hint_.store(o.hint_.load(std::memory_order_relaxed), std::memory_order_relaxed);
+  }
+
+  /// The one formula for a support value, so that equal vertices give bit-identical values.
+  static S dot(const S* p, S dx, S dy, S dz) { return p[0] * dx + p[1] * dy + p[2] * dz; }
+
+  /// Cell of a cube-face coordinate in [-1, 1] (NaN: cell 0).
+  std::size_t cell(S u) const {
+    const S f = (u + S(1)) * (S(seed_cells_) * S(0.5));
+    if (!(f > S(0))) return 0;
+    return f >= S(seed_cells_) ? seed_cells_ - 1 : std::size_t(f);
+  }
+
+  /// The direction table: the cube of directions, each face cut into k x k cells (k about
+  /// sqrt(n / 24), so a cell spans a few vertices), each cell holding the support vertex of its
+  /// centre direction. Cold queries then start a step or two from their answer. Built by climbing
+  /// from the previous cell's answer, so it costs about one climb step per cell.
+  void build_seeds() {
+    seed_cells_ =
+        std::clamp<std::size_t>(std::size_t(std::sqrt(double(nodes_.size()) / 24.0)), 1, 64);
+    const std::size_t k = seed_cells_;
+    seeds_.assign(6 * k * k, 0);
+    std::uint32_t v = 0;
+    for (std::size_t face = 0; face < 6; ++face) {
+      const int axis = int(face / 2);
+      for (std::size_t i = 0; i < k; ++i)
+        for (std::size_t j = 0; j < k; ++j) {
+          // Serpentine order: consecutive cells are neighbours, so each climb is short.
+          const std::size_t jj = i % 2 ? k - 1 - j : j;
+          Vec3T<S> d;
+          d[axis] = face % 2 ? S(-1) : S(1);
+          d[(axis + 1) % 3] = S((2 * double(i) + 1) / double(k) - 1);
+          d[(axis + 2) % 3] = S((2 * double(jj) + 1) / double(k) - 1);
+          v = climb<false>(d, v, dot(nodes_[v].p, d.x(), d.y(), d.z()));
+          seeds_[(face * k + i) * k + jj] = v;
+        }
+    }
+  }
+
+  /// Strict-improvement climb from `start`, whose support value is `best`. kSeed: before the first
+  /// move, jump to the direction table's seed if it is higher than the best neighbour (still a
+  /// strict improvement, so the bound on moves holds).
+  template <bool kSeed>
+  std::uint32_t climb(const Vec3T<S>& d, std::uint32_t start, S best) const {
+    const S dx = d.x(), dy = d.y(), dz = d.z();
+    std::uint32_t v = start;
+    std::uint32_t begin = nodes_[v].begin, end = nodes_[v].end;
+    // Each move strictly increases the support value, so at most size() - 1 moves can happen.
+    for (std::size_t moves = 0; moves < nodes_.size(); ++moves) {
+      std::uint32_t next = end;  // none
+      S next_value = best;
+      bool tie = false;
+      for (std::uint32_t k = begin; k < end; ++k) {
+        const S value = dot(edges_[k].p, dx, dy, dz);
+        if (value > next_value) {
+          next_value = value;
+          next = k;
+        }
+        tie |= value == best;
+      }
+      if (next == end) return tie ? plateau_index(d, v, best) : v;
+      if constexpr (kSeed) {
+        if (moves == 0) {
+          const std::uint32_t seed = seed_index(d);
+          const S seed_value = dot(nodes_[seed].p, dx, dy, dz);
+          if (seed_value > next_value) {
+            v = seed;
+            begin = nodes_[seed].begin;
+            end = nodes_[seed].end;
+            best = seed_value;
+            continue;
+          }
+        }
+      }
+      const Edge& e = edges_[next];
+      v = e.to;
+      begin = e.begin;
+      end = e.end;
+      best = next_value;
+    }
+    return std::uint32_t(scan_index(d));  // unreachable in exact arithmetic: a safety net
+  }
+
+  /// v is a local maximum with value `best` and a neighbour of equal value: the lowest index of
+  /// the connected set of vertices with that value (the face or edge facing d). A vertex of the
+  /// set with a strictly larger neighbour (possible only through rounding) or a set larger than
+  /// kHullPlateauLimit hands the query to the scan.
+  std::uint32_t plateau_index(const Vec3T<S>& d, std::uint32_t v, S best) const {
+    const S dx = d.x(), dy = d.y(), dz = d.z();
+    std::uint32_t set[kHullPlateauLimit];
+    std::size_t count = 0;
+    set[count++] = v;
+    std::uint32_t lowest = v;
+    for (std::size_t i = 0; i < count; ++i) {
+      const Node& node = nodes_[set[i]];
+      for (std::uint32_t k = node.begin; k < node.end; ++k) {
+        const Edge& e = edges_[k];
+        const S value = dot(e.p, dx, dy, dz);
+        if (value > best) return std::uint32_t(scan_index(d));
+        if (value != best) continue;
+        bool seen = false;
+        for (std::size_t j = 0; j < count; ++j) seen |= set[j] == e.to;
+        if (seen) continue;
+        if (count == kHullPlateauLimit) return std::uint32_t(scan_index(d));
+        set[count++] = e.to;
+        lowest = std::min(lowest, e.to);
+      }
+    }
+    return lowest;
+  }
+
+  std::vector<S> x_, y_, z_;          // structure of arrays, for the scan
+  std::vector<Node> nodes_;           // array of structures, for the climb
+  std::vector<Edge> edges_;           // CSR adjacency: vertex v's edges are nodes_[v].begin .. end
+  std::vector<std::uint32_t> seeds_;  // direction table, 6 k k entries (empty when scanning)
+  std::size_t seed_cells_ = 0;        // k
+  HullStatus status_ = HullStatus::Point;
+  bool climbs_ = false;
+  S tolerance_ = S(0);
+  S bounding_radius_ = S(0);
+  // On its own cache line: the climb writes it, while other threads read the members above.
+  // The class is then 64-aligned and a multiple of 64 bytes long, so nothing follows on that line.
+  alignas(64) mutable std::atomic<std::uint32_t> hint_{0};
+};
+
+using ConvexHullShape = ConvexHullShapeT<double>;
+
+}  // namespace mink
