@@ -18,6 +18,12 @@ struct PolytopeRef {
   const char* error() const { return polytope->error(); }
 };
 
+/// The polytope's own faces for manifolds (found by argument-dependent lookup).
+void support_feature(const PolytopeRef& p, const Vec3& d, double tolerance,
+                     SupportFeatureT<double>& out) {
+  mink::support_feature(*p.polytope, d, tolerance, out);
+}
+
 /// A hull shape held by pointer: support climbs from the shape's shared hint.
 struct HullRef {
   using Scalar = double;
@@ -90,6 +96,19 @@ ContactResult contact(const Shape& a, const Pose& pose_a, const Shape& b, const 
   return dispatch(a, b, [&](const auto& ca, const auto& cb) {
     return contact<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, pose_a, cb, pose_b,
                                                                            tolerances, cache);
+  });
+}
+
+ManifoldResult manifold(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
+                        const ManifoldOptions& options) {
+  if (a.error() || b.error()) {
+    ManifoldResult r;
+    r.error = a.error() ? a.error() : b.error();
+    return r;
+  }
+  return dispatch(a, b, [&](const auto& ca, const auto& cb) {
+    return manifold<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, pose_a, cb, pose_b,
+                                                                            options);
   });
 }
 

@@ -203,6 +203,33 @@ TEST(QueryAnswer, FieldsOfEachWant) {
   EXPECT_EQ(hit_contact.keys, separated_contact);
 }
 
+TEST(QueryAnswer, ManifoldOfABoxOnATable) {
+  // A 1 x 1 box pushed 0.25 into a 4 x 4 table: four points at the box's bottom corners
+  // (x, y = +-0.5, z = 0.75 on B, 1 on A; position the midpoint 0.875), each 0.25 deep.
+  const Answer r = answer_one(R"({"a":{"type":"box","half_extents":[2,2,1]},"b":{"type":"box",)"
+                              R"("half_extents":[0.5,0.5,0.5]},"pb":{"t":[0,0,1.25]},)"
+                              R"("want":"manifold"})");
+  EXPECT_EQ(r.status, "ok") << r.raw;
+  EXPECT_EQ(r.depth, 0.25) << r.raw;
+  EXPECT_EQ(*r.normal, Vec3(0, 0, 1)) << r.raw;
+  EXPECT_TRUE(r.keys.count("manifold")) << r.raw;
+  for (const char* corner :
+       {"[0.5,0.5,0.875]", "[-0.5,0.5,0.875]", "[0.5,-0.5,0.875]", "[-0.5,-0.5,0.875]"})
+    EXPECT_NE(r.raw.find(std::string("{\"position\":") + corner + ",\"depth\":0.25,"),
+              std::string::npos)
+        << corner << " in " << r.raw;
+  std::size_t points = 0;
+  for (std::size_t at = r.raw.find("\"position\""); at != std::string::npos;
+       at = r.raw.find("\"position\"", at + 1))
+    ++points;
+  EXPECT_EQ(points, 4u) << r.raw;
+  // Apart: no points.
+  const Answer apart = answer_one(R"({"a":{"type":"sphere","radius":1},"b":{"type":"sphere",)"
+                                  R"("radius":1},"pb":{"t":[3,0,0]},"want":"manifold"})");
+  EXPECT_EQ(apart.status, "ok") << apart.raw;
+  EXPECT_NE(apart.raw.find("\"points\":[]"), std::string::npos) << apart.raw;
+}
+
 TEST(QueryAnswer, TimingAddsMicroseconds) {
   const std::string line = R"({"a":{"type":"sphere","radius":1},"b":{"type":"box",)"
                            R"("half_extents":[1,1,1]},"pb":{"t":[3,0,0]})";

@@ -88,6 +88,15 @@ bool all_finite(const ContactResult& r) {
          is_finite(r.normal) && is_finite(r.point_a) && is_finite(r.point_b);
 }
 
+bool all_finite(const ManifoldResult& r) {
+  bool finite = std::isfinite(r.distance) && std::isfinite(r.depth) &&
+                std::isfinite(r.error_bound) && is_finite(r.normal);
+  for (int i = 0; i < r.count; ++i)
+    finite = finite && is_finite(r.points[i].point_a) && is_finite(r.points[i].point_b) &&
+             std::isfinite(r.points[i].depth);
+  return finite;
+}
+
 /// The frame every answer shares: run the query, turn invalid input and non-finite results into
 /// error lines, time it when asked, then the status, the fields `write_fields` adds, the
 /// iteration count, the error bound when the iteration cap was hit, and the time.
@@ -162,11 +171,53 @@ void write_contact(const Query& query, const AnswerOptions& options, std::string
       out);
 }
 
+/// The contact fields (point_a, point_b: the deepest manifold point's pair, omitted when the
+/// manifold is empty) and the manifold: its normal and up to 4 points, each with its position
+/// (the midpoint of the pair), depth (> 0 penetrating, < 0 a gap) and the pair on A and on B.
+void write_manifold(const Query& query, const AnswerOptions& options, std::string& out) {
+  const auto fields = [&out](const ManifoldResult& r) {
+    append_field(out, "distance");
+    append_number(out, r.distance);
+    append_field(out, "depth");
+    append_number(out, r.depth);
+    append_field(out, "normal");
+    append_vec3(out, r.normal);
+    if (r.count > 0) {
+      append_field(out, "point_a");
+      append_vec3(out, r.points[0].point_a);
+      append_field(out, "point_b");
+      append_vec3(out, r.points[0].point_b);
+    }
+    if (r.normal_chosen) out += ",\"normal_chosen\":true";
+    append_field(out, "manifold");
+    out += "{\"normal\":";
+    append_vec3(out, r.normal);
+    out += ",\"points\":[";
+    for (int i = 0; i < r.count; ++i) {
+      if (i > 0) out += ',';
+      out += "{\"position\":";
+      append_vec3(out, r.points[i].position());
+      out += ",\"depth\":";
+      append_number(out, r.points[i].depth);
+      out += ",\"point_a\":";
+      append_vec3(out, r.points[i].point_a);
+      out += ",\"point_b\":";
+      append_vec3(out, r.points[i].point_b);
+      out += '}';
+    }
+    out += "]}";
+  };
+  write_answer_of(
+      query, options, [&] { return manifold(query.a, query.pose_a, query.b, query.pose_b); },
+      fields, out);
+}
+
 }  // namespace
 
 void write_answer(const Query& query, const AnswerOptions& options, std::string& out) {
   if (query.want == Want::Intersect) return write_intersect(query, options, out);
   if (query.want == Want::Contact) return write_contact(query, options, out);
+  if (query.want == Want::Manifold) return write_manifold(query, options, out);
   write_distance(query, options, out);
 }
 

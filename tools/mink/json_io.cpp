@@ -205,7 +205,7 @@ bool QueryParser::parse_want(dom::element value, Want& want) {
   } else if (text == "contact") {
     want = Want::Contact;
   } else if (text == "manifold") {
-    return fail("want 'manifold' is not supported yet");
+    want = Want::Manifold;
   } else {
     return fail("want " + quoted(text) + " is unknown (intersect, distance, contact, manifold)");
   }

@@ -23,6 +23,7 @@ enum class Want {
   Intersect,  ///< boolean only
   Distance,   ///< distance, and the normal and closest points when separated
   Contact,    ///< distance plus penetration depth (the default)
+  Manifold,   ///< contact plus a contact manifold (up to 4 points)
 };
 
 /// The largest magnitude accepted for any number of a shape or pose (unit: length). Beyond it the

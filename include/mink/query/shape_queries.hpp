@@ -7,6 +7,7 @@
 #include "mink/epa/contact.hpp"
 #include "mink/gjk/distance.hpp"
 #include "mink/gjk/intersect.hpp"
+#include "mink/manifold/manifold.hpp"
 #include "mink/support/shape.hpp"
 
 namespace mink {
@@ -19,5 +20,10 @@ DistanceResult distance(const Shape& a, const Pose& pose_a, const Shape& b, cons
 
 ContactResult contact(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
                       const Tolerances& tolerances = {}, GjkCache* cache = nullptr);
+
+/// Contact manifold (manifold/manifold.hpp). Shapes that are sums of several cores have no
+/// closed-form features: theirs are sampled from the support mapping.
+ManifoldResult manifold(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
+                        const ManifoldOptions& options = {});
 
 }  // namespace mink
