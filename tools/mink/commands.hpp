@@ -10,4 +10,7 @@ namespace mink::cli {
 /// `mink query [--timing] [files...]`: answer JSON-lines queries (cmd_query.cpp).
 void add_query_command(CLI::App& app, int& exit_code);
 
+/// `mink view [files...] -o page.html`: answer query lines and draw them in a page (cmd_view.cpp).
+void add_view_command(CLI::App& app, int& exit_code);
+
 }  // namespace mink::cli
