@@ -19,4 +19,5 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_nasty_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_exact_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_property_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/io/mesh_test.cpp
 )

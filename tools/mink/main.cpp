@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exit_code = 0;
   mink::cli::add_query_command(app, exit_code);
+  mink::cli::add_hull_command(app, exit_code);
   mink::cli::add_view_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;

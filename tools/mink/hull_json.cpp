@@ -1,0 +1,278 @@
+#include "hull_json.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "json_io.hpp"
+#include "json_writer.hpp"
+
+namespace mink::cli {
+
+namespace dom = simdjson::dom;
+
+namespace {
+
+/// The largest relative tolerance build_convex_hull() accepts (HullOptions).
+constexpr double kMaxRelativeTolerance = 1e-2;
+
+void append_field(std::string& out, const char* key) {
+  out += ",\"";
+  out += key;
+  out += "\":";
+}
+
+template <class Range, class Append>
+void append_array(std::string& out, const Range& range, Append&& append) {
+  out += '[';
+  bool first = true;
+  for (const auto& item : range) {
+    if (!first) out += ',';
+    first = false;
+    append(item);
+  }
+  out += ']';
+}
+
+/// The id for an error message: a quoted key cut to a sane length (it comes from the input).
+std::string quoted(std::string_view text) {
+  constexpr std::size_t kMaxLength = 64;
+  std::string out = "'";
+  std::size_t cut = std::min(text.size(), kMaxLength);
+  while (cut < text.size() && cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
+    --cut;
+  out += text.substr(0, cut);
+  if (cut < text.size()) out += "...";
+  out += '\'';
+  return out;
+}
+
+}  // namespace
+
+bool HullRequestParser::fail(std::string what) {
+  error_ = std::move(what);
+  return false;
+}
+
+bool HullRequestParser::parse_points(dom::element value, std::vector<Vec3>& points) {
+  dom::array array;
+  if (value.get_array().get(array)) return fail("points must be an array of [x, y, z] points");
+  if (array.size() == 0) return fail("points must hold at least one point");
+  points.clear();
+  points.reserve(array.size());
+  std::size_t i = 0;
+  for (const dom::element point : array) {
+    const std::string where = "points[" + std::to_string(i) + "]";
+    dom::array xyz;
+    if (point.get_array().get(xyz) || xyz.size() != 3)
+      return fail(where + " must be an array of 3 numbers");
+    Vec3 p;
+    int k = 0;
+    for (const dom::element component : xyz) {
+      double number;
+      if (component.get_double().get(number))
+        return fail(where + "[" + std::to_string(k) + "] must be a number");
+      // False for NaN too, so NaN fails (simdjson never yields one, but a later parser might).
+      if (!(std::abs(number) <= kMaxMagnitude))
+        return fail(
+            where + "[" + std::to_string(k) + "]" +
+            (std::isfinite(number) ? " is out of range (magnitude above 1e50)" : " is not finite"));
+      p[k++] = number;
+    }
+    points.push_back(p);
+    ++i;
+  }
+  return true;
+}
+
+bool HullRequestParser::parse(std::string_view line, std::int64_t line_number,
+                              HullRequest& request) {
+  request.id.clear();
+  append_integer(request.id, line_number);
+  request.points.clear();
+  request.max_vertices.reset();
+  request.relative_tolerance.reset();
+  error_.clear();
+
+  dom::element root;
+  if (const auto err = parser_.parse(line.data(), line.size(), false).get(root)) {
+    if (err == simdjson::NUMBER_ERROR)
+      return fail(
+          "invalid JSON: a number is malformed or out of range (beyond a double, or an integer "
+          "beyond 64 bits)");
+    return fail(std::string("invalid JSON: ") + simdjson::error_message(err));
+  }
+  dom::object object;
+  if (root.get_object().get(object)) return fail("a hull line must be a JSON object");
+
+  enum Field { kId, kPoints, kMaxVertices, kTolerance, kFieldCount };
+  static constexpr std::array<std::string_view, kFieldCount> kNames = {
+      "id", "points", "max_vertices", "relative_tolerance"};
+  std::array<dom::element, kFieldCount> fields;
+  std::array<bool, kFieldCount> present = {};
+  // The id is read before any other error is reported, so that the error line carries it.
+  std::string layout_error;
+  for (const auto [key, value] : object) {
+    int i = 0;
+    while (i < kFieldCount && kNames[i] != key) ++i;
+    if (i == kFieldCount) {
+      if (layout_error.empty())
+        layout_error = "unknown field " + quoted(key) +
+                       " (a hull line has id, points, max_vertices, relative_tolerance)";
+      continue;
+    }
+    if (present[i]) {
+      if (layout_error.empty()) layout_error = "duplicate field " + quoted(key);
+      continue;
+    }
+    present[i] = true;
+    fields[i] = value;
+  }
+  if (present[kId]) {
+    std::string_view text;
+    std::int64_t integer;
+    double number;
+    std::string id;
+    if (!fields[kId].get_string().get(text))
+      append_string(id, text);
+    else if (!fields[kId].get_int64().get(integer))
+      append_integer(id, integer);
+    else if (!fields[kId].get_double().get(number))
+      append_number(id, number);
+    else
+      return fail("id must be a string or a number");
+    request.id.swap(id);
+  }
+  if (!layout_error.empty()) return fail(layout_error);
+  if (!present[kPoints]) return fail("points is missing");
+  if (!parse_points(fields[kPoints], request.points)) return false;
+  if (present[kMaxVertices]) {
+    std::uint64_t max_vertices;
+    if (fields[kMaxVertices].get_uint64().get(max_vertices) ||
+        (max_vertices != 0 && max_vertices < 4))
+      return fail("max_vertices must be 0 (no limit) or an integer >= 4");
+    request.max_vertices = static_cast<std::size_t>(max_vertices);
+  }
+  if (present[kTolerance]) {
+    double tolerance;
+    if (fields[kTolerance].get_double().get(tolerance) ||
+        !(tolerance >= 0 && tolerance <= kMaxRelativeTolerance))
+      return fail("relative_tolerance must be a number in [0, 1e-2]");
+    request.relative_tolerance = tolerance;
+  }
+  return true;
+}
+
+void write_hull(std::string_view id_json, const ConvexHull& hull, std::string& out) {
+  out += "{\"id\":";
+  out += id_json;
+  out += ",\"status\":\"";
+  out += to_string(hull.status);
+  out += '"';
+  append_field(out, "vertices");
+  append_array(out, hull.vertices, [&](const HullVertex& v) { append_vec3(out, v.position); });
+  append_field(out, "input_indices");
+  append_array(out, hull.vertices,
+               [&](const HullVertex& v) { append_integer(out, v.input_index); });
+
+  // Face loops and, edge by edge, the face on the other side.
+  const auto append_loops = [&](bool neighbours) {
+    out += '[';
+    for (std::size_t f = 0; f < hull.faces.size(); ++f) {
+      if (f > 0) out += ',';
+      out += '[';
+      const HullFace& face = hull.faces[f];
+      for (std::uint32_t k = 0; k < face.count; ++k) {
+        if (k > 0) out += ',';
+        const std::uint32_t h = face.first + k;
+        append_integer(out, neighbours ? hull.neighbor_face(h) : hull.half_edges[h].vertex);
+      }
+      out += ']';
+    }
+    out += ']';
+  };
+  append_field(out, "faces");
+  append_loops(false);
+  append_field(out, "normals");
+  append_array(out, hull.faces, [&](const HullFace& f) { append_vec3(out, f.normal); });
+  append_field(out, "offsets");
+  append_array(out, hull.faces, [&](const HullFace& f) { append_number(out, f.offset); });
+
+  append_field(out, "vertex_neighbors");
+  out += '[';
+  for (std::size_t v = 0; v + 1 < hull.neighbor_offsets.size(); ++v) {
+    if (v > 0) out += ',';
+    out += '[';
+    for (std::uint32_t i = hull.neighbor_offsets[v]; i < hull.neighbor_offsets[v + 1]; ++i) {
+      if (i > hull.neighbor_offsets[v]) out += ',';
+      append_integer(out, hull.neighbors[i]);
+    }
+    out += ']';
+  }
+  out += ']';
+  append_field(out, "face_neighbors");
+  append_loops(true);
+
+  append_field(out, "volume");
+  append_number(out, hull.volume);
+  append_field(out, "area");
+  append_number(out, hull.area);
+  append_field(out, "tolerance");
+  append_number(out, hull.tolerance);
+  append_field(out, "complete");
+  out += hull.complete ? "true" : "false";
+  append_field(out, "max_outside");
+  append_number(out, hull.max_outside);
+  out += "}\n";
+}
+
+void write_hull_obj(std::string_view name, const ConvexHull& hull, std::size_t vertex_base,
+                    std::string& out) {
+  // An OBJ name is one token: whitespace would split it.
+  out += "o ";
+  for (const char c : name) out += (c == ' ' || c == '\t' || c == '\n' || c == '\r') ? '_' : c;
+  out += '\n';
+  for (const HullVertex& v : hull.vertices) {
+    out += "v ";
+    append_number(out, v.position.x());
+    out += ' ';
+    append_number(out, v.position.y());
+    out += ' ';
+    append_number(out, v.position.z());
+    out += '\n';
+  }
+  const auto index = [&](std::uint32_t v) {
+    append_integer(out, static_cast<std::int64_t>(vertex_base + v + 1));
+  };
+  switch (hull.status) {
+    case HullStatus::Full:
+    case HullStatus::Flat:
+      for (std::size_t f = 0; f < hull.faces.size(); ++f) {
+        out += 'f';
+        for (std::uint32_t k = 0; k < hull.faces[f].count; ++k) {
+          out += ' ';
+          index(hull.face_vertex(f, k));
+        }
+        out += '\n';
+      }
+      break;
+    case HullStatus::Segment:
+      if (hull.vertices.size() == 2) {
+        out += "l ";
+        index(0);
+        out += ' ';
+        index(1);
+        out += '\n';
+      }
+      break;
+    case HullStatus::Point:
+      if (!hull.vertices.empty()) {
+        out += "p ";
+        index(0);
+        out += '\n';
+      }
+      break;
+  }
+}
+
+}  // namespace mink::cli

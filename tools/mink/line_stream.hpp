@@ -1,0 +1,30 @@
+/// @file line_stream.hpp
+/// Reading JSON lines in large chunks and writing the answers in large chunks, for subcommands
+/// other than `query` (whose QueryStream does the same for query lines): the caller supplies what
+/// to do with one line.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace mink::cli {
+
+/// Called for each non-blank line (without its newline and trailing "\r") with its 1-based line
+/// number; appends its answer line(s) to `out`. The memory after the line is readable for
+/// simdjson::SIMDJSON_PADDING bytes, so the line can be parsed in place.
+using LineHandler =
+    std::function<void(std::string_view line, std::int64_t line_number, std::string& out)>;
+
+/// Calls `handler` for every line readable from `fd` until its end and writes what it appends to
+/// `out`, flushing after each read (a program that writes one line to a pipe and waits gets its
+/// answer at once). Blank lines are skipped but counted. Returns false, with `error` set, when
+/// reading or writing fails.
+bool run_lines(int fd, std::FILE* out, const LineHandler& handler, std::string& error);
+
+/// The same on text in memory; returns what the handler appended (tests, embedding).
+std::string run_lines_on_text(std::string_view text, const LineHandler& handler);
+
+}  // namespace mink::cli
