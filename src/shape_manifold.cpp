@@ -1,0 +1,21 @@
+// Run-time manifold on two Shapes: see shape_dispatch.hpp.
+#include "shape_dispatch.hpp"
+
+namespace mink {
+
+using detail::dispatch;
+
+ManifoldResult manifold(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
+                        const ManifoldOptions& options) {
+  if (a.error() || b.error()) {
+    ManifoldResult r;
+    r.error = a.error() ? a.error() : b.error();
+    return r;
+  }
+  return dispatch(a, b, [&](const auto& ca, const auto& cb) {
+    return manifold<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, pose_a, cb, pose_b,
+                                                                            options);
+  });
+}
+
+}  // namespace mink
