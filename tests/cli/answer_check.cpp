@@ -51,14 +51,20 @@ Answer parse_answer(std::string_view line) {
   return a;
 }
 
-std::vector<Answer> parse_answers(std::string_view text) {
-  std::vector<Answer> answers;
+std::vector<std::string_view> split_lines(std::string_view text) {
+  std::vector<std::string_view> lines;
   while (!text.empty()) {
     const std::size_t newline = text.find('\n');
-    answers.push_back(parse_answer(text.substr(0, newline)));
+    lines.push_back(text.substr(0, newline));
     if (newline == std::string_view::npos) break;
     text.remove_prefix(newline + 1);
   }
+  return lines;
+}
+
+std::vector<Answer> parse_answers(std::string_view text) {
+  std::vector<Answer> answers;
+  for (const std::string_view line : split_lines(text)) answers.push_back(parse_answer(line));
   return answers;
 }
 

@@ -34,6 +34,9 @@ struct Answer {
 /// Parses one answer line; `valid_json` is false when it is not a JSON object.
 Answer parse_answer(std::string_view line);
 
+/// The lines of `text`, without their newlines (a last line without one included).
+std::vector<std::string_view> split_lines(std::string_view text);
+
 /// Splits `text` into lines (without the newlines) and parses each.
 std::vector<Answer> parse_answers(std::string_view text);
 

@@ -2,39 +2,14 @@
 // --version, unreadable files, and the demo's queries.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <cstdio>
 #include <fstream>
 #include <string>
 
 #include "answer_check.hpp"
+#include "run_mink.hpp"
 
 namespace mink::cli::test {
 namespace {
-
-struct ProcessResult {
-  std::string out;
-  int exit_code = -1;
-};
-
-ProcessResult run(const std::string& arguments) {
-  ProcessResult r;
-  const std::string command = std::string("'") + MINK_EXE + "' " + arguments + " 2>/dev/null";
-  std::FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
-}
 
 const std::string kQueries =
     R"({"id":"apart","a":{"type":"sphere","radius":1},"b":{"type":"sphere","radius":0.5},"pb":{"t":[0,4,0]}})"
@@ -61,20 +36,21 @@ void expect_answers(const std::vector<Answer>& answers) {
 }
 
 TEST(EndToEnd, AnswersAFile) {
-  const ProcessResult r = run("query '" + write_temp("e2e.jsonl", kQueries) + "'");
+  const ProcessResult r = run_mink("query '" + write_temp("e2e.jsonl", kQueries) + "'");
   EXPECT_EQ(r.exit_code, 0);
   expect_answers(parse_answers(r.out));
 }
 
 TEST(EndToEnd, AnswersStandardInput) {
   const std::string path = write_temp("e2e_stdin.jsonl", kQueries);
-  expect_answers(parse_answers(run("query < '" + path + "'").out));
-  const ProcessResult dash = run("query - < '" + path + "'");
+  expect_answers(parse_answers(run_mink("query < '" + path + "'").out));
+  const ProcessResult dash = run_mink("query - < '" + path + "'");
   EXPECT_EQ(dash.exit_code, 0);
 }
 
 TEST(EndToEnd, TimingAddsMicroseconds) {
-  const ProcessResult r = run("query --timing '" + write_temp("e2e_timing.jsonl", kQueries) + "'");
+  const ProcessResult r =
+      run_mink("query --timing '" + write_temp("e2e_timing.jsonl", kQueries) + "'");
   ASSERT_EQ(r.exit_code, 0);
   const auto answers = parse_answers(r.out);
   ASSERT_EQ(answers.size(), 4u);
@@ -83,20 +59,20 @@ TEST(EndToEnd, TimingAddsMicroseconds) {
 
 TEST(EndToEnd, MissingFileIsReportedAndOthersStillAnswered) {
   const std::string path = write_temp("e2e_more.jsonl", kQueries);
-  const ProcessResult r = run("query /nonexistent/queries.jsonl '" + path + "'");
+  const ProcessResult r = run_mink("query /nonexistent/queries.jsonl '" + path + "'");
   EXPECT_EQ(r.exit_code, 1);
   const auto answers = parse_answers(r.out);
   expect_answers(answers);
 }
 
 TEST(EndToEnd, Version) {
-  const ProcessResult r = run("--version");
+  const ProcessResult r = run_mink("--version");
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("mink 0."), std::string::npos) << r.out;
 }
 
 TEST(EndToEnd, NoSubcommandIsAUsageError) {
-  EXPECT_NE(run("").exit_code, 0);
+  EXPECT_NE(run_mink("").exit_code, 0);
 }
 
 TEST(EndToEnd, DemoQueriesAllAnswer) {
@@ -105,7 +81,7 @@ TEST(EndToEnd, DemoQueriesAllAnswer) {
   std::size_t lines = 0;
   for (std::string line; std::getline(file, line);)
     if (!line.empty()) ++lines;
-  const ProcessResult r = run(std::string("query '") + MINK_DEMO_QUERIES + "'");
+  const ProcessResult r = run_mink(std::string("query '") + MINK_DEMO_QUERIES + "'");
   ASSERT_EQ(r.exit_code, 0);
   const auto answers = parse_answers(r.out);
   ASSERT_EQ(answers.size(), lines);
