@@ -20,6 +20,29 @@ std::optional<Vec3> read_vec3(simdjson::dom::element e) {
   return v;
 }
 
+/// `{"normal": [...], "points": [{"position", "depth", "point_a", "point_b"}, ...]}`; a point
+/// with a field missing or of the wrong type is left out (so the count check fails).
+void read_manifold(simdjson::dom::element e, Answer& a) {
+  const auto field = [](simdjson::dom::element object, std::string_view key) {
+    simdjson::dom::element value;
+    return object[key].get(value) ? std::nullopt : read_vec3(value);
+  };
+  a.manifold_normal = field(e, "normal");
+  simdjson::dom::array points;
+  if (e["points"].get_array().get(points)) return;
+  for (const simdjson::dom::element point : points) {
+    ManifoldPointAnswer p;
+    const auto position = field(point, "position");
+    const auto point_a = field(point, "point_a");
+    const auto point_b = field(point, "point_b");
+    if (!position || !point_a || !point_b || point["depth"].get_double().get(p.depth)) continue;
+    p.position = *position;
+    p.point_a = *point_a;
+    p.point_b = *point_b;
+    a.manifold_points.push_back(p);
+  }
+}
+
 }  // namespace
 
 Answer parse_answer(std::string_view line) {
@@ -47,6 +70,7 @@ Answer parse_answer(std::string_view line) {
     if (key == "normal") a.normal = read_vec3(value);
     if (key == "point_a") a.point_a = read_vec3(value);
     if (key == "point_b") a.point_b = read_vec3(value);
+    if (key == "manifold") read_manifold(value, a);
   }
   return a;
 }

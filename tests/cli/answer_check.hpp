@@ -13,6 +13,14 @@
 
 namespace mink::cli::test {
 
+/// One point of an answer's manifold.
+struct ManifoldPointAnswer {
+  Vec3 position = Vec3::Zero();
+  double depth = 0;
+  Vec3 point_a = Vec3::Zero();
+  Vec3 point_b = Vec3::Zero();
+};
+
 /// The fields of one answer line. `id` is the id re-serialised by simdjson (strings quoted).
 struct Answer {
   bool valid_json = false;
@@ -29,6 +37,8 @@ struct Answer {
   std::optional<Vec3> point_b;
   std::optional<long> iterations;
   std::optional<double> us;
+  std::optional<Vec3> manifold_normal;  ///< manifold.normal, when there is a manifold
+  std::vector<ManifoldPointAnswer> manifold_points;
 };
 
 /// Parses one answer line; `valid_json` is false when it is not a JSON object.

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <random>
+#include <set>
 #include <string>
 
 #include "answer_check.hpp"
@@ -228,6 +229,70 @@ TEST(QueryAnswer, ManifoldOfABoxOnATable) {
                                   R"("radius":1},"pb":{"t":[3,0,0]},"want":"manifold"})");
   EXPECT_EQ(apart.status, "ok") << apart.raw;
   EXPECT_NE(apart.raw.find("\"points\":[]"), std::string::npos) << apart.raw;
+}
+
+TEST(QueryAnswer, ManifoldMarginGivesSpeculativePoints) {
+  // A 1 x 1 box 0.05 above a 2 x 2 one: with a margin of 0.1, its four bottom corners with depth
+  // -0.05 (point_a on A's top face z = 1, point_b on B's bottom z = 1.05); with 0.01, none.
+  const std::string boxes = R"({"a":{"type":"box","half_extents":[1,1,1]},"b":{"type":"box",)"
+                            R"("half_extents":[0.5,0.5,0.5]},"pb":{"t":[0,0,1.55]},)"
+                            R"("want":"manifold")";
+  const double gap = 1.55 - 0.5 - 1;
+  const Answer within = answer_one(boxes + R"(,"margin":0.1})");
+  EXPECT_EQ(within.status, "ok") << within.raw;
+  EXPECT_EQ(within.intersect, false);
+  EXPECT_NEAR(*within.distance, gap, 1e-15);
+  EXPECT_EQ(within.depth, 0.0);
+  EXPECT_EQ(*within.normal, Vec3(0, 0, 1)) << within.raw;
+  EXPECT_EQ(*within.manifold_normal, Vec3(0, 0, 1)) << within.raw;
+  ASSERT_EQ(within.manifold_points.size(), 4u) << within.raw;
+  std::set<std::pair<double, double>> corners;
+  for (const ManifoldPointAnswer& p : within.manifold_points) {
+    EXPECT_NEAR(p.depth, -gap, 1e-15) << within.raw;
+    EXPECT_NEAR(std::abs(p.position.x()), 0.5, 1e-15);
+    EXPECT_NEAR(std::abs(p.position.y()), 0.5, 1e-15);
+    EXPECT_NEAR(p.position.z(), 1 + gap / 2, 1e-15);
+    EXPECT_NEAR(p.point_a.z(), 1, 1e-15);
+    EXPECT_NEAR(p.point_b.z(), 1 + gap, 1e-15);
+    EXPECT_LE((p.point_b - p.point_a + p.depth * Vec3(0, 0, 1)).norm(), 1e-15);
+    corners.emplace(p.position.x(), p.position.y());
+  }
+  EXPECT_EQ(corners.size(), 4u) << within.raw;
+  // point_a and point_b: the deepest manifold point's.
+  EXPECT_EQ(*within.point_a, within.manifold_points[0].point_a);
+  EXPECT_EQ(*within.point_b, within.manifold_points[0].point_b);
+
+  for (const std::string margin : {",\"margin\":0.01", ",\"margin\":0", ""}) {
+    const Answer beyond = answer_one(boxes + margin + "}");
+    EXPECT_EQ(beyond.status, "ok") << beyond.raw;
+    EXPECT_TRUE(beyond.manifold_points.empty()) << beyond.raw;
+    EXPECT_FALSE(beyond.point_a || beyond.point_b) << beyond.raw;
+    EXPECT_NE(beyond.raw.find("\"points\":[]"), std::string::npos) << beyond.raw;
+  }
+
+  // A margin also keeps the corners of a penetrating box that are just above the surface: a
+  // unit box turned about x by 5e-4 rad (its bottom still a face: within the feature tolerance,
+  // 1e-3 of its bounding radius), its lower bottom edge 1e-4 deep, the upper one sin(5e-4)
+  // higher, so about 4e-4 above.
+  const double angle = 5e-4, s = std::sin(angle), c = std::cos(angle), deep = 1e-4;
+  const std::string tilted = R"({"a":{"type":"box","half_extents":[2,2,1]},"b":{"type":"box",)"
+                             R"("half_extents":[0.5,0.5,0.5]},"pb":{"t":[0,0,)" +
+                             num(1 - deep + 0.5 * c + 0.5 * s) + R"(],"q":[)" +
+                             num(std::cos(angle / 2)) + "," + num(std::sin(angle / 2)) +
+                             R"(,0,0]},"want":"manifold")";
+  const Answer tight = answer_one(tilted + "}");
+  const Answer loose = answer_one(tilted + R"(,"margin":1e-3})");
+  EXPECT_EQ(tight.status, "ok") << tight.raw;
+  EXPECT_EQ(loose.status, "ok") << loose.raw;
+  EXPECT_NEAR(*tight.depth, deep, 1e-12) << tight.raw;
+  ASSERT_EQ(tight.manifold_points.size(), 2u) << tight.raw;
+  for (const ManifoldPointAnswer& p : tight.manifold_points) EXPECT_NEAR(p.depth, deep, 1e-12);
+  ASSERT_EQ(loose.manifold_points.size(), 4u) << loose.raw;
+  std::multiset<double> depths;
+  for (const ManifoldPointAnswer& p : loose.manifold_points) depths.insert(p.depth);
+  EXPECT_NEAR(*depths.begin(), deep - s, 1e-12) << loose.raw;
+  EXPECT_NEAR(*std::next(depths.begin()), deep - s, 1e-12) << loose.raw;
+  EXPECT_NEAR(*depths.rbegin(), deep, 1e-12) << loose.raw;
 }
 
 TEST(QueryAnswer, TimingAddsMicroseconds) {

@@ -173,7 +173,8 @@ void write_contact(const Query& query, const AnswerOptions& options, std::string
 
 /// The contact fields (point_a, point_b: the deepest manifold point's pair, omitted when the
 /// manifold is empty) and the manifold: its normal and up to 4 points, each with its position
-/// (the midpoint of the pair), depth (> 0 penetrating, < 0 a gap) and the pair on A and on B.
+/// (the midpoint of the pair), depth (> 0 penetrating, < 0 a gap: separated shapes within the
+/// query's margin) and the pair on A and on B.
 void write_manifold(const Query& query, const AnswerOptions& options, std::string& out) {
   const auto fields = [&out](const ManifoldResult& r) {
     append_field(out, "distance");
@@ -207,8 +208,11 @@ void write_manifold(const Query& query, const AnswerOptions& options, std::strin
     }
     out += "]}";
   };
+  ManifoldOptions manifold_options;
+  manifold_options.margin = query.margin;
   write_answer_of(
-      query, options, [&] { return manifold(query.a, query.pose_a, query.b, query.pose_b); },
+      query, options,
+      [&] { return manifold(query.a, query.pose_a, query.b, query.pose_b, manifold_options); },
       fields, out);
 }
 

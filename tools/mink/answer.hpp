@@ -23,6 +23,9 @@ struct AnswerOptions {
 /// - `contact`: id, status, intersect, distance, depth, normal, point_a, point_b (closest points
 ///   when separated, deepest points when penetrating: point_b - point_a = -depth * normal),
 ///   `normal_chosen: true` when several normals were equally good, iterations.
+/// - `manifold`: the contact fields (point_a, point_b those of the deepest manifold point, omitted
+///   when there is none) and `manifold`: {normal, points: [{position, depth, point_a, point_b}]},
+///   with speculative points (depth < 0) for separated shapes within the query's margin.
 ///
 /// Status: Separated and Intersecting are `ok`; IterationLimit is `iteration_limit` and adds
 /// `error_bound`; a result the library refused, or one holding a number that is not finite, is an

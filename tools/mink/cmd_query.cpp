@@ -56,7 +56,7 @@ void add_query_command(CLI::App& app, int& exit_code) {
       "query",
       "Answer collision queries given as JSON lines, one answer line per query line, in order.\n"
       "Each line: {\"id\": .., \"a\": SHAPE, \"pa\": POSE, \"b\": SHAPE, \"pb\": POSE, \"want\": "
-      "\"intersect|distance|contact\"}");
+      "\"intersect|distance|contact|manifold\", \"margin\": m (manifold only)}");
   command->add_flag("--timing", options->timing,
                     "Add \"us\" to each answer: the median time of the query itself in "
                     "microseconds (parsing and printing excluded)");

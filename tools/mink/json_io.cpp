@@ -133,9 +133,9 @@ bool QueryParser::parse(std::string_view line, std::int64_t line_number, Query& 
   dom::object object;
   if (root.get_object().get(object)) return fail("a query line must be a JSON object");
 
-  enum Field { kId, kA, kPoseA, kB, kPoseB, kWant, kFieldCount };
-  static constexpr std::array<std::string_view, kFieldCount> kNames = {"id", "a",  "pa",
-                                                                       "b",  "pb", "want"};
+  enum Field { kId, kA, kPoseA, kB, kPoseB, kWant, kMargin, kFieldCount };
+  static constexpr std::array<std::string_view, kFieldCount> kNames = {"id", "a",    "pa",    "b",
+                                                                       "pb", "want", "margin"};
   std::array<dom::element, kFieldCount> fields;
   std::array<bool, kFieldCount> present = {};
   // The id is read before any other error is reported, so that the error line carries it.
@@ -145,7 +145,8 @@ bool QueryParser::parse(std::string_view line, std::int64_t line_number, Query& 
     while (i < kFieldCount && kNames[i] != key) ++i;
     if (i == kFieldCount) {
       if (layout_error.empty())
-        layout_error = "unknown field " + quoted(key) + " (a query has id, a, pa, b, pb, want)";
+        layout_error =
+            "unknown field " + quoted(key) + " (a query has id, a, pa, b, pb, want, margin)";
       continue;
     }
     if (present[i]) {
@@ -170,6 +171,12 @@ bool QueryParser::parse(std::string_view line, std::int64_t line_number, Query& 
     return false;
   query.want = Want::Contact;
   if (present[kWant] && !parse_want(fields[kWant], query.want)) return false;
+  query.margin = 0;
+  if (present[kMargin]) {
+    if (query.want != Want::Manifold)
+      return fail("margin is only for want manifold (speculative contact points)");
+    if (!parse_length(fields[kMargin], Path{nullptr, "margin"}, query.margin)) return false;
+  }
   return true;
 }
 

@@ -40,6 +40,9 @@ struct Query {
   Pose pose_a;
   Pose pose_b;
   Want want = Want::Contact;
+  /// `margin` (want manifold only): separated shapes closer than this get speculative manifold
+  /// points, with negative depth (ManifoldOptions::margin). 0 when absent.
+  double margin = 0;
 };
 
 /// Parses query lines. Keep one per thread and reuse it: the JSON parser and scratch buffers are
