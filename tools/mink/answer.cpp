@@ -132,6 +132,29 @@ void write_intersect(const Query& query, const AnswerOptions& options, std::stri
       [](const IntersectResult&) {}, out);
 }
 
+/// `point_a` and `point_b`: a pair of world points, on A's surface and on B's.
+void append_pair(std::string& out, const Vec3& point_a, const Vec3& point_b) {
+  append_field(out, "point_a");
+  append_vec3(out, point_a);
+  append_field(out, "point_b");
+  append_vec3(out, point_b);
+}
+
+/// The fields of a `contact` answer after `intersect`, shared by `manifold`: distance, depth,
+/// normal, the pair point_a, point_b when `with_pair`, and normal_chosen when it is true.
+template <class Result>
+void append_contact_fields(const Result& r, bool with_pair, const Vec3& point_a,
+                           const Vec3& point_b, std::string& out) {
+  append_field(out, "distance");
+  append_number(out, r.distance);
+  append_field(out, "depth");
+  append_number(out, r.depth);
+  append_field(out, "normal");
+  append_vec3(out, r.normal);
+  if (with_pair) append_pair(out, point_a, point_b);
+  if (r.normal_chosen) out += ",\"normal_chosen\":true";
+}
+
 void write_distance(const Query& query, const AnswerOptions& options, std::string& out) {
   const auto fields = [&out](const DistanceResult& r) {
     append_field(out, "distance");
@@ -141,10 +164,7 @@ void write_distance(const Query& query, const AnswerOptions& options, std::strin
     if (!r.intersect && r.normal.squaredNorm() > 0) {
       append_field(out, "normal");
       append_vec3(out, r.normal);
-      append_field(out, "point_a");
-      append_vec3(out, r.point_a);
-      append_field(out, "point_b");
-      append_vec3(out, r.point_b);
+      append_pair(out, r.point_a, r.point_b);
     }
   };
   write_answer_of(
@@ -154,17 +174,7 @@ void write_distance(const Query& query, const AnswerOptions& options, std::strin
 
 void write_contact(const Query& query, const AnswerOptions& options, std::string& out) {
   const auto fields = [&out](const ContactResult& r) {
-    append_field(out, "distance");
-    append_number(out, r.distance);
-    append_field(out, "depth");
-    append_number(out, r.depth);
-    append_field(out, "normal");
-    append_vec3(out, r.normal);
-    append_field(out, "point_a");
-    append_vec3(out, r.point_a);
-    append_field(out, "point_b");
-    append_vec3(out, r.point_b);
-    if (r.normal_chosen) out += ",\"normal_chosen\":true";
+    append_contact_fields(r, true, r.point_a, r.point_b, out);
   };
   write_answer_of(
       query, options, [&] { return contact(query.a, query.pose_a, query.b, query.pose_b); }, fields,
@@ -177,19 +187,7 @@ void write_contact(const Query& query, const AnswerOptions& options, std::string
 /// query's margin) and the pair on A and on B.
 void write_manifold(const Query& query, const AnswerOptions& options, std::string& out) {
   const auto fields = [&out](const ManifoldResult& r) {
-    append_field(out, "distance");
-    append_number(out, r.distance);
-    append_field(out, "depth");
-    append_number(out, r.depth);
-    append_field(out, "normal");
-    append_vec3(out, r.normal);
-    if (r.count > 0) {
-      append_field(out, "point_a");
-      append_vec3(out, r.points[0].point_a);
-      append_field(out, "point_b");
-      append_vec3(out, r.points[0].point_b);
-    }
-    if (r.normal_chosen) out += ",\"normal_chosen\":true";
+    append_contact_fields(r, r.count > 0, r.points[0].point_a, r.points[0].point_b, out);
     append_field(out, "manifold");
     out += "{\"normal\":";
     append_vec3(out, r.normal);
@@ -198,12 +196,9 @@ void write_manifold(const Query& query, const AnswerOptions& options, std::strin
       if (i > 0) out += ',';
       out += "{\"position\":";
       append_vec3(out, r.points[i].position());
-      out += ",\"depth\":";
+      append_field(out, "depth");
       append_number(out, r.points[i].depth);
-      out += ",\"point_a\":";
-      append_vec3(out, r.points[i].point_a);
-      out += ",\"point_b\":";
-      append_vec3(out, r.points[i].point_b);
+      append_pair(out, r.points[i].point_a, r.points[i].point_b);
       out += '}';
     }
     out += "]}";
