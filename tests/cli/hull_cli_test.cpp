@@ -438,6 +438,26 @@ TEST(HullCli, MalformedLinesGetErrorsAndTheToolGoesOn) {
   }
 }
 
+TEST(HullCli, IdsAreEchoedAsMinkQueryEchoesThem) {
+  // Strings re-escaped, numbers in shortest round-trip form, integers beyond int64 exact.
+  const std::string input = R"({"id":"a \"b\"","points":[[0,0,0]]})"
+                            "\n"
+                            R"({"id":-5,"points":[[0,0,0]]})"
+                            "\n"
+                            R"({"id":1.50,"points":[[0,0,0]]})"
+                            "\n"
+                            R"({"id":18446744073709551615,"points":[[0,0,0]]})"
+                            "\n"
+                            R"({"points":[[0,0,0]]})"
+                            "\n";
+  const ProcessResult r = run_mink("hull " + shell_quoted(write_temp("hull_ids.jsonl", input)));
+  const std::vector<std::string_view> lines = split_lines(r.out);
+  ASSERT_EQ(lines.size(), 5u) << r.out;
+  const std::vector<std::string> ids = {R"("a \"b\"")", "-5", "1.5", "18446744073709551615", "5"};
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    EXPECT_EQ(lines[i].substr(0, 7 + ids[i].size()), "{\"id\":" + ids[i] + ",") << lines[i];
+}
+
 /// The unit cube as an OBJ file: 8 vertices, 6 quads.
 const std::string kCubeObj =
     "# unit cube\no cube\n"

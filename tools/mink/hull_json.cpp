@@ -1,8 +1,6 @@
 #include "hull_json.hpp"
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 
 #include "json_io.hpp"
 #include "json_writer.hpp"
@@ -34,56 +32,7 @@ void append_array(std::string& out, const Range& range, Append&& append) {
   out += ']';
 }
 
-/// The id for an error message: a quoted key cut to a sane length (it comes from the input).
-std::string quoted(std::string_view text) {
-  constexpr std::size_t kMaxLength = 64;
-  std::string out = "'";
-  std::size_t cut = std::min(text.size(), kMaxLength);
-  while (cut < text.size() && cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
-    --cut;
-  out += text.substr(0, cut);
-  if (cut < text.size()) out += "...";
-  out += '\'';
-  return out;
-}
-
 }  // namespace
-
-bool HullRequestParser::fail(std::string what) {
-  error_ = std::move(what);
-  return false;
-}
-
-bool HullRequestParser::parse_points(dom::element value, std::vector<Vec3>& points) {
-  dom::array array;
-  if (value.get_array().get(array)) return fail("points must be an array of [x, y, z] points");
-  if (array.size() == 0) return fail("points must hold at least one point");
-  points.clear();
-  points.reserve(array.size());
-  std::size_t i = 0;
-  for (const dom::element point : array) {
-    const std::string where = "points[" + std::to_string(i) + "]";
-    dom::array xyz;
-    if (point.get_array().get(xyz) || xyz.size() != 3)
-      return fail(where + " must be an array of 3 numbers");
-    Vec3 p;
-    int k = 0;
-    for (const dom::element component : xyz) {
-      double number;
-      if (component.get_double().get(number))
-        return fail(where + "[" + std::to_string(k) + "] must be a number");
-      // False for NaN too, so NaN fails (simdjson never yields one, but a later parser might).
-      if (!(std::abs(number) <= kMaxMagnitude))
-        return fail(
-            where + "[" + std::to_string(k) + "]" +
-            (std::isfinite(number) ? " is out of range (magnitude above 1e50)" : " is not finite"));
-      p[k++] = number;
-    }
-    points.push_back(p);
-    ++i;
-  }
-  return true;
-}
 
 bool HullRequestParser::parse(std::string_view line, std::int64_t line_number,
                               HullRequest& request) {
@@ -92,60 +41,17 @@ bool HullRequestParser::parse(std::string_view line, std::int64_t line_number,
   request.points.clear();
   request.max_vertices.reset();
   request.relative_tolerance.reset();
-  error_.clear();
-
-  dom::element root;
-  if (const auto err = parser_.parse(line.data(), line.size(), false).get(root)) {
-    if (err == simdjson::NUMBER_ERROR)
-      return fail(
-          "invalid JSON: a number is malformed or out of range (beyond a double, or an integer "
-          "beyond 64 bits)");
-    return fail(std::string("invalid JSON: ") + simdjson::error_message(err));
-  }
   dom::object object;
-  if (root.get_object().get(object)) return fail("a hull line must be a JSON object");
+  if (!parse_object(line, "a hull line", object)) return false;
 
   enum Field { kId, kPoints, kMaxVertices, kTolerance, kFieldCount };
   static constexpr std::array<std::string_view, kFieldCount> kNames = {
       "id", "points", "max_vertices", "relative_tolerance"};
   std::array<dom::element, kFieldCount> fields;
-  std::array<bool, kFieldCount> present = {};
-  // The id is read before any other error is reported, so that the error line carries it.
-  std::string layout_error;
-  for (const auto [key, value] : object) {
-    int i = 0;
-    while (i < kFieldCount && kNames[i] != key) ++i;
-    if (i == kFieldCount) {
-      if (layout_error.empty())
-        layout_error = "unknown field " + quoted(key) +
-                       " (a hull line has id, points, max_vertices, relative_tolerance)";
-      continue;
-    }
-    if (present[i]) {
-      if (layout_error.empty()) layout_error = "duplicate field " + quoted(key);
-      continue;
-    }
-    present[i] = true;
-    fields[i] = value;
-  }
-  if (present[kId]) {
-    std::string_view text;
-    std::int64_t integer;
-    double number;
-    std::string id;
-    if (!fields[kId].get_string().get(text))
-      append_string(id, text);
-    else if (!fields[kId].get_int64().get(integer))
-      append_integer(id, integer);
-    else if (!fields[kId].get_double().get(number))
-      append_number(id, number);
-    else
-      return fail("id must be a string or a number");
-    request.id.swap(id);
-  }
-  if (!layout_error.empty()) return fail(layout_error);
+  std::array<bool, kFieldCount> present;
+  if (!read_fields(object, kNames, "a hull line", fields, present, request.id)) return false;
   if (!present[kPoints]) return fail("points is missing");
-  if (!parse_points(fields[kPoints], request.points)) return false;
+  if (!parse_points(fields[kPoints], Path{nullptr, "points"}, 0, request.points)) return false;
   if (present[kMaxVertices]) {
     std::uint64_t max_vertices;
     if (fields[kMaxVertices].get_uint64().get(max_vertices) ||

@@ -9,8 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include <simdjson.h>
-
+#include "json_io.hpp"
 #include "mink/hull/convex_hull.hpp"
 
 namespace mink::cli {
@@ -25,24 +24,16 @@ struct HullRequest {
   std::optional<double> relative_tolerance;
 };
 
-/// Parses request lines. Every field is checked: unknown or duplicate fields, wrong types, empty
-/// or malformed point lists, numbers that are not finite or beyond 1e50 in magnitude (as in
-/// `mink query`), max_vertices that is not 0 or an integer >= 4, a relative tolerance outside
-/// [0, 1e-2]. Keep one and reuse it: the parser's buffers are allocated once.
-class HullRequestParser {
+/// Parses request lines. Every field is checked, with `mink query`'s reader (json_io.hpp): unknown
+/// or duplicate fields, wrong types, empty or malformed point lists, numbers that are not finite
+/// or beyond 1e50 in magnitude, max_vertices that is not 0 or an integer >= 4, a relative
+/// tolerance outside [0, 1e-2]. Keep one and reuse it: the parser's buffers are allocated once.
+class HullRequestParser : public JsonLineReader {
  public:
   /// Parses `line`, which must be followed by simdjson::SIMDJSON_PADDING readable bytes (see
   /// line_stream.hpp). Returns false when the line is malformed; error() then says why. In both
   /// cases `request.id` is set: from the line when its id is valid, else to `line_number`.
   bool parse(std::string_view line, std::int64_t line_number, HullRequest& request);
-  const std::string& error() const { return error_; }
-
- private:
-  bool fail(std::string what);
-  bool parse_points(simdjson::dom::element value, std::vector<Vec3>& points);
-
-  simdjson::dom::parser parser_;
-  std::string error_;
 };
 
 /// Appends the answer line for `hull`, newline included:

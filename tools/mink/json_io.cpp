@@ -1,5 +1,6 @@
 #include "json_io.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -9,26 +10,32 @@ namespace mink::cli {
 
 namespace dom = simdjson::dom;
 
-/// Where a value sits in the query line, for error messages. Paths live on the stack of the
-/// recursive descent and are only turned into text when something is wrong, so a valid line
-/// builds no strings.
-struct QueryParser::Path {
-  const Path* parent = nullptr;
-  std::string_view key;     ///< field name, when this is a field
-  std::int64_t index = -1;  ///< position, when this is an array element
-
-  void append_to(std::string& out) const {
-    if (parent) parent->append_to(out);
-    if (index >= 0) {
-      out += '[';
-      append_integer(out, index);
-      out += ']';
-      return;
-    }
-    if (parent) out += '.';
-    out += key;
+void JsonLineReader::Path::append_to(std::string& out) const {
+  if (parent) parent->append_to(out);
+  if (index >= 0) {
+    out += '[';
+    append_integer(out, index);
+    out += ']';
+    return;
   }
-};
+  if (parent) out += '.';
+  out += key;
+}
+
+std::string quoted(std::string_view text) {
+  constexpr std::size_t kMaxLength = 64;
+  std::string out = "'";
+  if (text.size() <= kMaxLength) {
+    out += text;
+  } else {
+    std::size_t cut = kMaxLength;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    out += text.substr(0, cut);
+    out += "...";
+  }
+  out += '\'';
+  return out;
+}
 
 namespace {
 
@@ -74,23 +81,6 @@ constexpr std::string_view kShapeTypeList =
     "sphere, box, capsule, cylinder, cone, ellipsoid, polytope, sum, rounded, point, segment, "
     "triangle";
 
-/// `text` in single quotes for an error message, cut to a sane length (at a UTF-8 character
-/// boundary, so the message stays valid UTF-8) because it comes from the input.
-std::string quoted(std::string_view text) {
-  constexpr std::size_t kMaxLength = 64;
-  std::string out = "'";
-  if (text.size() <= kMaxLength) {
-    out += text;
-  } else {
-    std::size_t cut = kMaxLength;
-    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
-    out += text.substr(0, cut);
-    out += "...";
-  }
-  out += '\'';
-  return out;
-}
-
 std::string field_list(const ShapeSpec& spec) {
   std::string out = "type";
   for (int i = 0; i < spec.field_count; ++i) {
@@ -102,23 +92,21 @@ std::string field_list(const ShapeSpec& spec) {
 
 }  // namespace
 
-bool QueryParser::fail(const Path& path, std::string_view what) {
+bool JsonLineReader::fail(const Path& path, std::string_view what) {
   error_.clear();
   path.append_to(error_);
   error_ += what;
   return false;
 }
 
-bool QueryParser::fail(std::string_view what) {
+bool JsonLineReader::fail(std::string_view what) {
   error_.assign(what);
   return false;
 }
 
-bool QueryParser::parse(std::string_view line, std::int64_t line_number, Query& query) {
-  query.id.clear();
-  append_integer(query.id, line_number);
+bool JsonLineReader::parse_object(std::string_view line, std::string_view what,
+                                  dom::object& object) {
   error_.clear();
-
   dom::element root;
   // realloc_if_needed = false: parse in place; the caller guarantees the padding.
   if (const auto err = parser_.parse(line.data(), line.size(), false).get(root)) {
@@ -130,23 +118,28 @@ bool QueryParser::parse(std::string_view line, std::int64_t line_number, Query& 
           "beyond 64 bits)");
     return fail(std::string("invalid JSON: ") + simdjson::error_message(err));
   }
-  dom::object object;
-  if (root.get_object().get(object)) return fail("a query line must be a JSON object");
+  if (root.get_object().get(object)) return fail(std::string(what) + " must be a JSON object");
+  return true;
+}
 
-  enum Field { kId, kA, kPoseA, kB, kPoseB, kWant, kMargin, kFieldCount };
-  static constexpr std::array<std::string_view, kFieldCount> kNames = {"id", "a",    "pa",    "b",
-                                                                       "pb", "want", "margin"};
-  std::array<dom::element, kFieldCount> fields;
-  std::array<bool, kFieldCount> present = {};
+bool JsonLineReader::read_fields(dom::object object, std::span<const std::string_view> names,
+                                 std::string_view what, std::span<dom::element> fields,
+                                 std::span<bool> present, std::string& id) {
+  std::fill(present.begin(), present.end(), false);
   // The id is read before any other error is reported, so that the error line carries it.
   std::string layout_error;
   for (const auto [key, value] : object) {
-    int i = 0;
-    while (i < kFieldCount && kNames[i] != key) ++i;
-    if (i == kFieldCount) {
-      if (layout_error.empty())
-        layout_error =
-            "unknown field " + quoted(key) + " (a query has id, a, pa, b, pb, want, margin)";
+    std::size_t i = 0;
+    while (i < names.size() && names[i] != key) ++i;
+    if (i == names.size()) {
+      if (layout_error.empty()) {
+        layout_error = "unknown field " + quoted(key) + " (" + std::string(what) + " has ";
+        for (std::size_t k = 0; k < names.size(); ++k) {
+          if (k > 0) layout_error += ", ";
+          layout_error += names[k];
+        }
+        layout_error += ')';
+      }
       continue;
     }
     if (present[i]) {
@@ -156,8 +149,23 @@ bool QueryParser::parse(std::string_view line, std::int64_t line_number, Query& 
     present[i] = true;
     fields[i] = value;
   }
-  if (present[kId] && !parse_id(fields[kId], query.id)) return false;
+  if (present[0] && !parse_id(fields[0], id)) return false;
   if (!layout_error.empty()) return fail(layout_error);
+  return true;
+}
+
+bool QueryParser::parse(std::string_view line, std::int64_t line_number, Query& query) {
+  query.id.clear();
+  append_integer(query.id, line_number);
+  dom::object object;
+  if (!parse_object(line, "a query line", object)) return false;
+
+  enum Field { kId, kA, kPoseA, kB, kPoseB, kWant, kMargin, kFieldCount };
+  static constexpr std::array<std::string_view, kFieldCount> kNames = {"id", "a",    "pa",    "b",
+                                                                       "pb", "want", "margin"};
+  std::array<dom::element, kFieldCount> fields;
+  std::array<bool, kFieldCount> present;
+  if (!read_fields(object, kNames, "a query", fields, present, query.id)) return false;
   if (!present[kA]) return fail("a is missing (the first shape)");
   if (!present[kB]) return fail("b is missing (the second shape)");
 
@@ -180,7 +188,7 @@ bool QueryParser::parse(std::string_view line, std::int64_t line_number, Query& 
   return true;
 }
 
-bool QueryParser::parse_id(dom::element value, std::string& id) {
+bool JsonLineReader::parse_id(dom::element value, std::string& id) {
   std::string_view text;
   std::int64_t integer;
   std::uint64_t unsigned_integer;
@@ -219,7 +227,7 @@ bool QueryParser::parse_want(dom::element value, Want& want) {
   return true;
 }
 
-bool QueryParser::parse_number(dom::element value, const Path& path, double& number) {
+bool JsonLineReader::parse_number(dom::element value, const Path& path, double& number) {
   if (value.get_double().get(number)) return fail(path, " must be a number");
   // The comparison is false for NaN, so NaN fails too (simdjson never yields one, but a later
   // change of parser must not let it through).
@@ -230,13 +238,13 @@ bool QueryParser::parse_number(dom::element value, const Path& path, double& num
   return true;
 }
 
-bool QueryParser::parse_length(dom::element value, const Path& path, double& length) {
+bool JsonLineReader::parse_length(dom::element value, const Path& path, double& length) {
   if (!parse_number(value, path, length)) return false;
   if (length < 0) return fail(path, " must be >= 0");
   return true;
 }
 
-bool QueryParser::parse_vec3(dom::element value, const Path& path, bool lengths, Vec3& v) {
+bool JsonLineReader::parse_vec3(dom::element value, const Path& path, bool lengths, Vec3& v) {
   dom::array array;
   if (value.get_array().get(array) || array.size() != 3)
     return fail(path, " must be an array of 3 numbers");
@@ -251,7 +259,8 @@ bool QueryParser::parse_vec3(dom::element value, const Path& path, bool lengths,
   return true;
 }
 
-bool QueryParser::parse_points(dom::element value, const Path& path, std::size_t exact_count) {
+bool JsonLineReader::parse_points(dom::element value, const Path& path, std::size_t exact_count,
+                                  std::vector<Vec3>& points) {
   dom::array array;
   if (value.get_array().get(array)) return fail(path, " must be an array of [x, y, z] points");
   const std::size_t count = array.size();
@@ -259,12 +268,13 @@ bool QueryParser::parse_points(dom::element value, const Path& path, std::size_t
   if (exact_count != 0 && count != exact_count)
     return fail(path, " must hold exactly " + std::to_string(exact_count) +
                           (exact_count == 1 ? " point" : " points"));
-  points_.clear();
+  points.clear();
+  points.reserve(count);
   std::int64_t i = 0;
   for (const dom::element point : array) {
     Vec3 p;
     if (!parse_vec3(point, Path{&path, {}, i}, false, p)) return false;
-    points_.push_back(p);
+    points.push_back(p);
     ++i;
   }
   return true;
@@ -371,19 +381,19 @@ bool QueryParser::parse_shape(dom::element value, const Path& path, Shape& shape
       made = Shape::ellipsoid(v);
       break;
     case ShapeType::Polytope:
-      if (!parse_points(fields[0], path0, 0)) return false;
+      if (!parse_points(fields[0], path0, 0, points_)) return false;
       made = Shape::polytope(points_);
       break;
     case ShapeType::Point:
-      if (!parse_points(fields[0], path0, 1)) return false;
+      if (!parse_points(fields[0], path0, 1, points_)) return false;
       made = Shape::point(points_[0]);
       break;
     case ShapeType::Segment:
-      if (!parse_points(fields[0], path0, 2)) return false;
+      if (!parse_points(fields[0], path0, 2, points_)) return false;
       made = Shape::segment(points_[0], points_[1]);
       break;
     case ShapeType::Triangle:
-      if (!parse_points(fields[0], path0, 3)) return false;
+      if (!parse_points(fields[0], path0, 3, points_)) return false;
       made = Shape::triangle(points_[0], points_[1], points_[2]);
       break;
     case ShapeType::Sum: {
