@@ -458,6 +458,18 @@ TEST(HullCli, IdsAreEchoedAsMinkQueryEchoesThem) {
     EXPECT_EQ(lines[i].substr(0, 7 + ids[i].size()), "{\"id\":" + ids[i] + ",") << lines[i];
 }
 
+TEST(HullCli, BlankLinesAreCountedAndCrlfIgnored) {
+  // As in mink query: lines of blanks (carriage returns included) are skipped but counted, a
+  // trailing "\r" is ignored, and a last line without its newline is answered.
+  const std::string input = "\r\n \t\r \n{\"points\":[[0,0,0]]}\r\n\n{\"points\":[[1,1,1]]}";
+  const auto answers = run_hull("hull_blank.jsonl", input);
+  ASSERT_EQ(answers.size(), 2u);
+  EXPECT_EQ(answers[0].id, "3");
+  EXPECT_EQ(answers[0].status, "point");
+  EXPECT_EQ(answers[1].id, "5");
+  EXPECT_EQ(answers[1].vertices, std::vector<Vec3>{Vec3(1, 1, 1)});
+}
+
 /// The unit cube as an OBJ file: 8 vertices, 6 quads.
 const std::string kCubeObj =
     "# unit cube\no cube\n"

@@ -16,9 +16,10 @@ namespace {
 constexpr std::size_t kChunk = std::size_t(1) << 20;
 constexpr std::size_t kPadding = simdjson::SIMDJSON_PADDING;
 
+/// Only spaces, tabs and carriage returns (JSON's white space, but for the newline).
 bool is_blank(std::string_view line) {
   for (const char c : line)
-    if (c != ' ' && c != '\t') return false;
+    if (c != ' ' && c != '\t' && c != '\r') return false;
   return true;
 }
 
@@ -62,6 +63,7 @@ bool run_lines(int fd, std::FILE* out, const LineHandler& handler, std::string& 
   std::vector<char> buffer(kChunk + kPadding);
   std::size_t begin = 0, end = 0;
   std::string answers;
+  answers.reserve(2 * kChunk);
   for (;;) {
     if (buffer.size() - kPadding - end < kChunk) {
       std::memmove(buffer.data(), buffer.data() + begin, end - begin);

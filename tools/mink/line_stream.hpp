@@ -1,7 +1,7 @@
 /// @file line_stream.hpp
-/// Reading JSON lines in large chunks and writing the answers in large chunks, for subcommands
-/// other than `query` (whose QueryStream does the same for query lines): the caller supplies what
-/// to do with one line.
+/// Reading JSON lines in large chunks and writing the answers in large chunks, for every
+/// subcommand (QueryStream for `mink query` and `mink view`, `mink hull`): the caller supplies
+/// what to do with one line.
 #pragma once
 
 #include <cstdint>
@@ -12,9 +12,10 @@
 
 namespace mink::cli {
 
-/// Called for each non-blank line (without its newline and trailing "\r") with its 1-based line
-/// number; appends its answer line(s) to `out`. The memory after the line is readable for
-/// simdjson::SIMDJSON_PADDING bytes, so the line can be parsed in place.
+/// Called for each non-blank line (without its newline and trailing "\r"; a line of spaces, tabs
+/// and carriage returns is blank) with its 1-based line number; appends its answer line(s) to
+/// `out`. The memory after the line is readable for simdjson::SIMDJSON_PADDING bytes, so the line
+/// can be parsed in place.
 using LineHandler =
     std::function<void(std::string_view line, std::int64_t line_number, std::string& out)>;
 

@@ -1,6 +1,6 @@
 /// @file query_stream.hpp
-/// `mink query` without the command line: splitting input into lines, answering each, and
-/// writing the answers in large chunks.
+/// `mink query` without the command line: answering each line of the input (split into lines
+/// and written in large chunks by line_stream.hpp).
 #pragma once
 
 #include <cstdint>
@@ -10,12 +10,14 @@
 
 #include "answer.hpp"
 #include "json_io.hpp"
+#include "line_stream.hpp"
 
 namespace mink::cli {
 
 /// Answers query lines in order, one answer line per non-blank input line. Blank lines are
 /// skipped but counted, so that a line without an id is answered with its 1-based line number in
-/// its own input. A trailing "\r" (CRLF files) is ignored. One per thread; reuse it.
+/// its own input. A trailing "\r" (CRLF files) is ignored (line_stream.hpp). One per thread;
+/// reuse it.
 class QueryStream {
  public:
   explicit QueryStream(AnswerOptions options = {}) : options_(options) {}
@@ -31,15 +33,13 @@ class QueryStream {
   std::string answer_text(std::string_view text);
 
  private:
-  /// Answers the complete lines in [begin, end) and returns how many bytes they took; the bytes
-  /// after `end` must be readable for simdjson::SIMDJSON_PADDING bytes.
-  std::size_t answer_lines(const char* begin, const char* end, std::string& out);
-  void answer_line(std::string_view line, std::string& out);
+  void answer_line(std::string_view line, std::int64_t line_number, std::string& out);
+  /// answer_line() on this stream, for run_lines().
+  LineHandler handler();
 
   AnswerOptions options_;
   QueryParser parser_;
   Query query_;
-  std::int64_t line_number_ = 0;
 };
 
 }  // namespace mink::cli
