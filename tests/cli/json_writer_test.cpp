@@ -91,6 +91,16 @@ TEST(JsonWriter, Vec3) {
   EXPECT_EQ(out, "[1,-0.5,0]");
 }
 
+TEST(JsonWriter, ComponentsAndFields) {
+  std::string out;
+  append_components(out, Vec3(1, -0.5, 1e300), ' ');
+  EXPECT_EQ(out, "1 -0.5 1e+300");
+  out = "{\"a\":1";
+  append_field(out, "b");
+  out += "2}";
+  EXPECT_EQ(out, R"({"a":1,"b":2})");
+}
+
 TEST(JsonWriter, Integers) {
   std::string out;
   append_integer(out, -9223372036854775807 - 1);

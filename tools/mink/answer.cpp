@@ -45,20 +45,6 @@ double round_to_nanoseconds(double us) {
   return std::round(us * 1000.0) / 1000.0;
 }
 
-void begin_answer(std::string_view id_json, const char* status, std::string& out) {
-  out += "{\"id\":";
-  out += id_json;
-  out += ",\"status\":\"";
-  out += status;
-  out += '"';
-}
-
-void append_field(std::string& out, const char* key) {
-  out += ",\"";
-  out += key;
-  out += "\":";
-}
-
 void end_answer(const AnswerOptions& options, double us, std::string& out) {
   if (options.timing) {
     append_field(out, "us");
@@ -218,6 +204,14 @@ void write_answer(const Query& query, const AnswerOptions& options, std::string&
   if (query.want == Want::Contact) return write_contact(query, options, out);
   if (query.want == Want::Manifold) return write_manifold(query, options, out);
   write_distance(query, options, out);
+}
+
+void begin_answer(std::string_view id_json, std::string_view status, std::string& out) {
+  out += "{\"id\":";
+  out += id_json;
+  out += ",\"status\":\"";
+  out += status;
+  out += '"';
 }
 
 void write_error(std::string_view id_json, std::string_view message, std::string& out) {

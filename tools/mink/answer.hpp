@@ -32,6 +32,10 @@ struct AnswerOptions {
 /// error line (the second would be a library bug: the line is worth reporting).
 void write_answer(const Query& query, const AnswerOptions& options, std::string& out);
 
+/// Appends `{"id":<id_json>,"status":"<status>"`, the start of every answer line (of `mink hull`
+/// too); the caller adds the other fields and the closing `}` and newline.
+void begin_answer(std::string_view id_json, std::string_view status, std::string& out);
+
 /// Appends `{"id":<id_json>,"status":"error","error":"<message>"}` and a newline to `out`.
 void write_error(std::string_view id_json, std::string_view message, std::string& out);
 

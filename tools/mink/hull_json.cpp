@@ -1,7 +1,10 @@
 #include "hull_json.hpp"
 
 #include <array>
+#include <ranges>
+#include <span>
 
+#include "answer.hpp"
 #include "json_io.hpp"
 #include "json_writer.hpp"
 
@@ -13,12 +16,6 @@ namespace {
 
 /// The largest relative tolerance build_convex_hull() accepts (HullOptions).
 constexpr double kMaxRelativeTolerance = 1e-2;
-
-void append_field(std::string& out, const char* key) {
-  out += ",\"";
-  out += key;
-  out += "\":";
-}
 
 template <class Range, class Append>
 void append_array(std::string& out, const Range& range, Append&& append) {
@@ -70,11 +67,7 @@ bool HullRequestParser::parse(std::string_view line, std::int64_t line_number,
 }
 
 void write_hull(std::string_view id_json, const ConvexHull& hull, std::string& out) {
-  out += "{\"id\":";
-  out += id_json;
-  out += ",\"status\":\"";
-  out += to_string(hull.status);
-  out += '"';
+  begin_answer(id_json, to_string(hull.status), out);
   append_field(out, "vertices");
   append_array(out, hull.vertices, [&](const HullVertex& v) { append_vec3(out, v.position); });
   append_field(out, "input_indices");
@@ -83,19 +76,12 @@ void write_hull(std::string_view id_json, const ConvexHull& hull, std::string& o
 
   // Face loops and, edge by edge, the face on the other side.
   const auto append_loops = [&](bool neighbours) {
-    out += '[';
-    for (std::size_t f = 0; f < hull.faces.size(); ++f) {
-      if (f > 0) out += ',';
-      out += '[';
-      const HullFace& face = hull.faces[f];
-      for (std::uint32_t k = 0; k < face.count; ++k) {
-        if (k > 0) out += ',';
-        const std::uint32_t h = face.first + k;
-        append_integer(out, neighbours ? hull.neighbor_face(h) : hull.half_edges[h].vertex);
-      }
-      out += ']';
-    }
-    out += ']';
+    append_array(out, hull.faces, [&](const HullFace& face) {
+      append_array(
+          out, std::views::iota(face.first, face.first + face.count), [&](std::uint32_t h) {
+            append_integer(out, neighbours ? hull.neighbor_face(h) : hull.half_edges[h].vertex);
+          });
+    });
   };
   append_field(out, "faces");
   append_loops(false);
@@ -105,17 +91,13 @@ void write_hull(std::string_view id_json, const ConvexHull& hull, std::string& o
   append_array(out, hull.faces, [&](const HullFace& f) { append_number(out, f.offset); });
 
   append_field(out, "vertex_neighbors");
-  out += '[';
-  for (std::size_t v = 0; v + 1 < hull.neighbor_offsets.size(); ++v) {
-    if (v > 0) out += ',';
-    out += '[';
-    for (std::uint32_t i = hull.neighbor_offsets[v]; i < hull.neighbor_offsets[v + 1]; ++i) {
-      if (i > hull.neighbor_offsets[v]) out += ',';
-      append_integer(out, hull.neighbors[i]);
-    }
-    out += ']';
-  }
-  out += ']';
+  const auto neighbors_of = [&](std::size_t v) {
+    const std::uint32_t first = hull.neighbor_offsets[v];
+    return std::span(hull.neighbors).subspan(first, hull.neighbor_offsets[v + 1] - first);
+  };
+  append_array(out, std::views::iota(std::size_t(0), hull.vertices.size()), [&](std::size_t v) {
+    append_array(out, neighbors_of(v), [&](std::uint32_t u) { append_integer(out, u); });
+  });
   append_field(out, "face_neighbors");
   append_loops(true);
 
@@ -140,11 +122,7 @@ void write_hull_obj(std::string_view name, const ConvexHull& hull, std::size_t v
   out += '\n';
   for (const HullVertex& v : hull.vertices) {
     out += "v ";
-    append_number(out, v.position.x());
-    out += ' ';
-    append_number(out, v.position.y());
-    out += ' ';
-    append_number(out, v.position.z());
+    append_components(out, v.position, ' ');
     out += '\n';
   }
   const auto index = [&](std::uint32_t v) {

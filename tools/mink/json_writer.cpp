@@ -56,12 +56,22 @@ void append_string(std::string& out, std::string_view text) {
 
 void append_vec3(std::string& out, const Vec3& v) {
   out += '[';
-  append_number(out, v.x());
-  out += ',';
-  append_number(out, v.y());
-  out += ',';
-  append_number(out, v.z());
+  append_components(out, v, ',');
   out += ']';
+}
+
+void append_components(std::string& out, const Vec3& v, char separator) {
+  append_number(out, v.x());
+  out += separator;
+  append_number(out, v.y());
+  out += separator;
+  append_number(out, v.z());
+}
+
+void append_field(std::string& out, std::string_view key) {
+  out += ",\"";
+  out += key;
+  out += "\":";
 }
 
 }  // namespace mink::cli

@@ -26,4 +26,11 @@ void append_string(std::string& out, std::string_view text);
 /// Appends `[x,y,z]`.
 void append_vec3(std::string& out, const Vec3& v);
 
+/// Appends `x`, `y`, `z` separated by `separator` (numbers as append_number writes them), e.g.
+/// the coordinates of an OBJ vertex line with ' '.
+void append_components(std::string& out, const Vec3& v, char separator);
+
+/// Appends `,"key":`, the start of an object's field after its first one.
+void append_field(std::string& out, std::string_view key);
+
 }  // namespace mink::cli
