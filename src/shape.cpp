@@ -80,10 +80,6 @@ Expected<Shape> Shape::triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
   return from_core(Triangle{a, b, c}, 0);
 }
 
-// polytope() does not switch to a hull above some size on its own: building one costs about
-// 1.7 us per point against 0.3 to 0.5 ns per point and scan, so a one-off query (the `mink query`
-// line, which builds its shapes per line) would pay ~100x more than it saves. Callers that keep a
-// shape use convex_hull().
 Expected<Shape> Shape::polytope(std::span<const Vec3> points) {
   auto p = Polytope::make(points);
   if (!p) return Expected<Shape>::failure(p.error());

@@ -29,6 +29,7 @@
 #include "mink/shapes/cone.hpp"
 #include "mink/shapes/cylinder.hpp"
 #include "mink/shapes/ellipsoid.hpp"
+#include "mink/shapes/hull_shape.hpp"
 #include "mink/shapes/point.hpp"
 #include "mink/shapes/polytope.hpp"
 #include "mink/shapes/segment.hpp"
@@ -284,37 +285,122 @@ void support_feature(const TriangleT<S>& triangle, const Vec3T<S>& d, S toleranc
   detail::feature_from_points(near, count, n, out);
 }
 
-template <class S>
-void support_feature(const PolytopeT<S>& polytope, const Vec3T<S>& d, S tolerance,
-                     SupportFeatureT<S>& out) {
-  // One scan for the support height, one for the points near it (a polytope carries no faces).
-  // The points within the tolerance need not be one face: the tip of a nearly flat ridge also
-  // qualifies, and a polygon through it would put manifold points inside the polytope. So the
-  // polygon must be planar (every near point within 1e-12 of the size of its fitted plane), and
-  // and support the polytope, and the tolerance shrinks tenfold until it does; a face that the
-  // normal hits exactly survives.
-  const Vec3T<S> n = d.normalized();
-  const S top = polytope.point(polytope.support_index(n)).dot(n);
-  const S flat = S(1e-12) * polytope.bounding_radius();
-  constexpr int kMaxNear = 64;
-  Vec3T<S> near[kMaxNear];
+namespace detail {
+
+/// Most points near the support plane that a polytope or hull feature gathers.
+inline constexpr int kMaxNearPoints = 64;
+
+/// The feature of a shape made of points (a polytope or a hull, whose faces are not stored as
+/// such) along unit n: `gather(top, tolerance, near)` writes the points within `tolerance` of
+/// the support plane at height `top` (at most kMaxNearPoints) and returns their count. Those
+/// points need not be one face: the tip of a nearly flat ridge also qualifies, and a polygon
+/// through it would put manifold points inside the shape. So the polygon must be planar (every
+/// near point within 1e-12 of the size of its fitted plane) and support the shape, and the
+/// tolerance shrinks tenfold until it does; a face that the normal hits exactly survives.
+template <class T, class Gather>
+void point_set_feature(const T& shape, const Vec3T<typename T::Scalar>& n,
+                       typename T::Scalar tolerance, Gather&& gather,
+                       SupportFeatureT<typename T::Scalar>& out) {
+  using S = typename T::Scalar;
+  const Vec3T<S> top_point = shape.support_core(n);
+  const S top = top_point.dot(n);
+  const S flat = S(1e-12) * shape.bounding_radius();
+  Vec3T<S> near[kMaxNearPoints];
   for (int round = 0; round < 4; ++round, tolerance *= S(0.1)) {
-    int count = 0;
-    for (std::size_t i = 0; i < polytope.size() && count < kMaxNear; ++i) {
-      const Vec3T<S> p = polytope.point(i);
-      if (top - p.dot(n) <= tolerance) near[count++] = p;
-    }
-    detail::feature_from_points(near, count, n, out);
+    const int count = gather(top, tolerance, near);
+    feature_from_points(near, count, n, out);
     if (out.count < 3) return;
     const S w = out.normal.dot(out.points[0]);
     bool planar = true;
     for (int i = 0; i < count && planar; ++i)
       planar = std::abs(out.normal.dot(near[i]) - w) <= flat;
-    // And the plane must support the polytope: three near points always fit a plane, but it may
-    // cut through the polytope.
-    if (planar && polytope.support_core(out.normal).dot(out.normal) <= w + flat) return;
+    // And the plane must support the shape: three near points always fit a plane, but it may
+    // cut through the shape.
+    if (planar && shape.support_core(out.normal).dot(out.normal) <= w + flat) return;
   }
-  out.set_point(polytope.support_core(n));
+  out.set_point(top_point);
+}
+
+}  // namespace detail
+
+template <class S>
+void support_feature(const ConvexHullShapeT<S>& hull, const Vec3T<S>& d, S tolerance,
+                     SupportFeatureT<S>& out);
+
+/// A polytope that has switched to its hull (polytope.hpp) takes the hull's faces. Before, it
+/// carries no faces: one scan for the support height, one for the points near it.
+template <class S>
+void support_feature(const PolytopeT<S>& polytope, const Vec3T<S>& d, S tolerance,
+                     SupportFeatureT<S>& out) {
+  if (const ConvexHullShapeT<S>* hull = polytope.hull()) {
+    support_feature(*hull, d, tolerance, out);
+    return;
+  }
+  const Vec3T<S> n = d.normalized();
+  auto gather = [&](S top, S within, Vec3T<S>* near) {
+    int count = 0;
+    for (std::size_t i = 0; i < polytope.size() && count < detail::kMaxNearPoints; ++i) {
+      const Vec3T<S> p = polytope.point(i);
+      if (top - p.dot(n) <= within) near[count++] = p;
+    }
+    return count;
+  };
+  detail::point_set_feature(polytope, n, tolerance, gather, out);
+}
+
+/// A hull has its faces: among those around the support vertex, the one whose normal is closest
+/// to d, when all its corners are within the tolerance of the support plane (however many
+/// corners it has: more than kMaxFeaturePoints keep an evenly spread subset, still convex).
+/// Otherwise (an edge or a vertex faces d, or a lower-dimensional hull) the points near the
+/// support plane, found by walking the edge graph from the support vertex: the vertices above a
+/// plane form a connected subgraph of a convex polytope's edges (the reason hill climbing
+/// works), so the walk visits only the feature's vertices and their neighbours.
+template <class S>
+void support_feature(const ConvexHullShapeT<S>& hull, const Vec3T<S>& d, S tolerance,
+                     SupportFeatureT<S>& out) {
+  const Vec3T<S> n = d.normalized();
+  const std::uint32_t start = std::uint32_t(hull.support_index(n));
+  const S top = hull.point(start).dot(n);
+  std::size_t best_face = hull.face_count();
+  S best_alignment = -S(2);
+  for (const std::uint32_t f : hull.faces_around(start)) {
+    const S alignment = hull.face_normal(f).dot(n);
+    if (alignment > best_alignment) {
+      best_alignment = alignment;
+      best_face = f;
+    }
+  }
+  if (best_face < hull.face_count()) {
+    const std::span<const std::uint32_t> loop = hull.face_loop(best_face);
+    bool near = true;
+    for (const std::uint32_t v : loop) near = near && top - hull.point(v).dot(n) <= tolerance;
+    if (near) {
+      const int corners = int(loop.size());
+      out.count = std::min(corners, kMaxFeaturePoints);
+      for (int j = 0; j < out.count; ++j)
+        out.points[j] = hull.point(loop[std::size_t((j * corners) / out.count)]);
+      out.normal = hull.face_normal(best_face);
+      return;
+    }
+  }
+  auto gather = [&](S top_value, S within, Vec3T<S>* near) {
+    std::uint32_t found[detail::kMaxNearPoints];
+    int count = 0;
+    found[count] = start;
+    near[count++] = hull.point(start);
+    for (int i = 0; i < count; ++i)
+      hull.for_each_neighbor(found[i], [&](std::uint32_t u) {
+        if (count == detail::kMaxNearPoints) return;
+        const Vec3T<S> p = hull.point(u);
+        if (top_value - p.dot(n) > within) return;
+        for (int j = 0; j < count; ++j)
+          if (found[j] == u) return;
+        found[count] = u;
+        near[count++] = p;
+      });
+    return count;
+  };
+  detail::point_set_feature(hull, n, tolerance, gather, out);
 }
 
 template <ConvexShape T>

@@ -125,6 +125,7 @@ class ConvexHullShapeT {
     shape.y_.resize(n);
     shape.z_.resize(n);
     shape.nodes_.resize(n);
+    shape.input_indices_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3T<S> p = hull.vertices[i].position.template cast<S>();
       if (!is_finite(p)) return Result::failure("convex hull vertex is not finite");
@@ -133,6 +134,7 @@ class ConvexHullShapeT {
       shape.x_[i] = p.x();
       shape.y_[i] = p.y();
       shape.z_[i] = p.z();
+      shape.input_indices_[i] = hull.vertices[i].input_index;
       shape.nodes_[i] = Node{{p.x(), p.y(), p.z()}, offsets[i], offsets[i + 1]};
       shape.bounding_radius_ = std::max(shape.bounding_radius_, p.norm());
     }
@@ -143,6 +145,7 @@ class ConvexHullShapeT {
       const Node& to = shape.nodes_[u];
       shape.edges_[k] = Edge{{to.p[0], to.p[1], to.p[2]}, u, to.begin, to.end};
     }
+    if (!shape.copy_faces(hull)) return Result::failure("convex hull faces are inconsistent");
     shape.climbs_ = n >= kHullClimbMinVertices;
     if (shape.climbs_) shape.build_seeds();
     return shape;
@@ -173,8 +176,14 @@ class ConvexHullShapeT {
       y_ = o.y_;
       z_ = o.z_;
       nodes_ = o.nodes_;
+      input_indices_ = o.input_indices_;
       edges_ = o.edges_;
       seeds_ = o.seeds_;
+      face_normals_ = o.face_normals_;
+      face_begin_ = o.face_begin_;
+      face_loops_ = o.face_loops_;
+      vertex_face_begin_ = o.vertex_face_begin_;
+      vertex_faces_ = o.vertex_faces_;
       copy_scalars(o);
     }
     return *this;
@@ -185,8 +194,14 @@ class ConvexHullShapeT {
       y_ = std::move(o.y_);
       z_ = std::move(o.z_);
       nodes_ = std::move(o.nodes_);
+      input_indices_ = std::move(o.input_indices_);
       edges_ = std::move(o.edges_);
       seeds_ = std::move(o.seeds_);
+      face_normals_ = std::move(o.face_normals_);
+      face_begin_ = std::move(o.face_begin_);
+      face_loops_ = std::move(o.face_loops_);
+      vertex_face_begin_ = std::move(o.vertex_face_begin_);
+      vertex_faces_ = std::move(o.vertex_faces_);
       copy_scalars(o);
     }
     return *this;
@@ -196,6 +211,8 @@ class ConvexHullShapeT {
   /// Number of hull vertices.
   std::size_t size() const { return nodes_.size(); }
   Vec3T<S> point(std::size_t i) const { return {x_[i], y_[i], z_[i]}; }
+  /// The index of vertex i's point in the points the hull was built from.
+  std::uint32_t input_index(std::size_t i) const { return input_indices_[i]; }
   HullStatus status() const { return status_; }
   /// The hull's flatness tolerance (input units): the bound on the climb's error, see above.
   S tolerance() const { return tolerance_; }
@@ -225,6 +242,25 @@ class ConvexHullShapeT {
   /// support_index for every start. NaN directions return `start`.
   std::uint32_t climb_index(const Vec3T<S>& d, std::uint32_t start) const {
     return climb<false>(d, start, dot(nodes_[start].p, d.x(), d.y(), d.z()));
+  }
+
+  /// Calls f(u) for each neighbour u of vertex v (< size()) on the hull's edge graph.
+  template <class F>
+  void for_each_neighbor(std::uint32_t v, F&& f) const {
+    for (std::uint32_t k = nodes_[v].begin; k < nodes_[v].end; ++k) f(edges_[k].to);
+  }
+
+  /// Faces (none for Segment and Point hulls; two opposite ones for Flat): unit outward normals and
+  /// vertex loops, counter-clockwise seen from outside. For support features (manifolds).
+  std::size_t face_count() const { return face_normals_.size(); }
+  const Vec3T<S>& face_normal(std::size_t f) const { return face_normals_[f]; }
+  std::span<const std::uint32_t> face_loop(std::size_t f) const {
+    return {face_loops_.data() + face_begin_[f], face_loops_.data() + face_begin_[f + 1]};
+  }
+  /// The faces that have vertex v (< size()) as a corner.
+  std::span<const std::uint32_t> faces_around(std::uint32_t v) const {
+    return {vertex_faces_.data() + vertex_face_begin_[v],
+            vertex_faces_.data() + vertex_face_begin_[v + 1]};
   }
 
   /// The brute-force answer: lowest index among the vertices farthest along d.
@@ -269,6 +305,32 @@ class ConvexHullShapeT {
     tolerance_ = o.tolerance_;
     bounding_radius_ = o.bounding_radius_;
     hint_.store(o.hint_.load(std::memory_order_relaxed), std::memory_order_relaxed);
+  }
+
+  /// Face loops and the faces around each vertex, from the hull's half-edges.
+  bool copy_faces(const ConvexHull& hull) {
+    const std::size_t n = nodes_.size();
+    face_begin_.assign(1, 0);
+    vertex_face_begin_.assign(n + 1, 0);
+    for (std::size_t f = 0; f < hull.faces.size(); ++f) {
+      const HullFace& face = hull.faces[f];
+      if (std::size_t(face.first) + face.count > hull.half_edges.size()) return false;
+      face_normals_.push_back(face.normal.template cast<S>());
+      for (std::uint32_t k = 0; k < face.count; ++k) {
+        const std::uint32_t v = hull.face_vertex(f, k);
+        if (v >= n) return false;
+        face_loops_.push_back(v);
+        ++vertex_face_begin_[v + 1];
+      }
+      face_begin_.push_back(std::uint32_t(face_loops_.size()));
+    }
+    for (std::size_t v = 0; v < n; ++v) vertex_face_begin_[v + 1] += vertex_face_begin_[v];
+    vertex_faces_.resize(face_loops_.size());
+    std::vector<std::uint32_t> fill(vertex_face_begin_.begin(), vertex_face_begin_.end() - 1);
+    for (std::size_t f = 0; f + 1 < face_begin_.size(); ++f)
+      for (std::uint32_t k = face_begin_[f]; k < face_begin_[f + 1]; ++k)
+        vertex_faces_[fill[face_loops_[k]]++] = std::uint32_t(f);
+    return true;
   }
 
   /// The one formula for a support value, so that equal vertices give bit-identical values.
@@ -379,11 +441,15 @@ class ConvexHullShapeT {
     return lowest;
   }
 
-  std::vector<S> x_, y_, z_;          // structure of arrays, for the scan
-  std::vector<Node> nodes_;           // array of structures, for the climb
+  std::vector<S> x_, y_, z_;                  // structure of arrays, for the scan
+  std::vector<Node> nodes_;                   // array of structures, for the climb
+  std::vector<std::uint32_t> input_indices_;  // vertex -> index of its input point
   std::vector<Edge> edges_;           // CSR adjacency: vertex v's edges are nodes_[v].begin .. end
   std::vector<std::uint32_t> seeds_;  // direction table, 6 k k entries (empty when scanning)
-  std::size_t seed_cells_ = 0;        // k
+  std::vector<Vec3T<S>> face_normals_;  // unit, outward
+  // CSR lists: face f's vertex loop, and the faces around vertex v.
+  std::vector<std::uint32_t> face_begin_, face_loops_, vertex_face_begin_, vertex_faces_;
+  std::size_t seed_cells_ = 0;  // k
   HullStatus status_ = HullStatus::Point;
   bool climbs_ = false;
   S tolerance_ = S(0);

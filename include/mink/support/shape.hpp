@@ -58,15 +58,16 @@ class Shape {
   static Expected<Shape> point(const Vec3& p);
   static Expected<Shape> segment(const Vec3& a, const Vec3& b);
   static Expected<Shape> triangle(const Vec3& a, const Vec3& b, const Vec3& c);
-  /// The convex hull of `points`, support by scanning them (Polytope): no set-up cost, the right
-  /// choice for a shape used in a few queries. Errors: no points, a NaN or infinite coordinate.
+  /// The convex hull of `points` (Polytope): support scans them, with no set-up cost, and a set of
+  /// 64 points or more switches to climbing its hull after kPolytopeHullAfterSupports queries
+  /// (shapes/polytope.hpp, "From scan to hull"): one-off queries never build a hull, shapes kept
+  /// across many queries climb. Errors: no points, a NaN or infinite coordinate.
   static Expected<Shape> polytope(std::span<const Vec3> points);
-  /// The convex hull of the same points as a ConvexHullShape (hull built once, support by
-  /// climbing): the polytope -> hull path for shapes kept across many queries. Same support values
-  /// as polytope() up to the hull's tolerance (shapes/hull_shape.hpp, "Accuracy"). Building costs
-  /// about as much as 4,000 scans of the points (docs/architecture.md, "Hull shape"), so it pays
-  /// off after roughly 100 queries of a large set, never in a one-off query. Errors: as
-  /// build_convex_hull.
+  /// The convex hull of the same points as a ConvexHullShape: the hull built now, support by
+  /// climbing from the first query, for shapes known to be kept. Same support values as
+  /// polytope() up to the hull's tolerance (shapes/hull_shape.hpp, "Accuracy"). Building costs
+  /// about as much as 2,000 to 6,000 scans of the points (docs/architecture.md, "Hull shape").
+  /// Errors: as build_convex_hull.
   static Expected<Shape> convex_hull(std::span<const Vec3> points);
   /// A hull shape from a built hull (for instance with HullOptions::max_vertices).
   static Expected<Shape> convex_hull(const ConvexHull& hull);

@@ -9,10 +9,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "mink/mink.hpp"
@@ -328,6 +330,76 @@ TEST(HullSupport, QueriesMatchPlainPolytopes) {
   }
   EXPECT_GT(separated, 20);
   EXPECT_GT(penetrating, 20);
+}
+
+// A large polytope scans for its first kPolytopeHullAfterSupports queries (exactly the scan's
+// answers), then builds its hull and climbs: answers are then input points whose support value is
+// the maximum within the hull's tolerance. Small polytopes never switch.
+TEST(HullSupport, PolytopeSwitchesToItsHullAfterManyQueries) {
+  std::vector<Case> cases;
+  auto ball = sphere(500, 31);
+  for (int i = 0; i < 300; ++i) ball.push_back(0.5 * ball[std::size_t(i)]);  // interior
+  for (int i = 0; i < 50; ++i) ball.push_back(ball[std::size_t(i)]);         // duplicates
+  cases.push_back({"sphere, interior, duplicates", ball, 20000});
+  cases.push_back({"cube surface", cube_surface(2000, 32), 20000});
+  cases.push_back({"lattice 6", lattice(6), 20000});
+  cases.push_back({"flat 300", flat(300, 33), 20000});
+  cases.push_back({"segment 200", segment(200, 34), 20000});
+  cases.push_back({"needle 300", needle(300, 35), 20000});
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const auto polytope = mink::Polytope::make(c.points);
+    ASSERT_TRUE(polytope.has_value());
+    std::mt19937_64 g(36);
+    for (std::uint32_t k = 0; k < mink::kPolytopeHullAfterSupports; ++k) {
+      ASSERT_FALSE(polytope->climbs()) << k;
+      const Vec3 d = unit(g);
+      ASSERT_EQ(polytope->support_index(d), polytope->scan_index(d));
+    }
+    ASSERT_TRUE(polytope->climbs());
+    const double tolerance = polytope->hull()->tolerance();
+    double radius = 0;
+    for (const Vec3& p : c.points) radius = std::max(radius, p.norm());
+    for (int k = 0; k < c.directions; ++k) {
+      const Vec3 d = unit(g) * std::ldexp(1.0, int(g() % 21) - 10);
+      const std::size_t got = polytope->support_index(d);
+      ASSERT_LT(got, c.points.size());
+      const double value = dot(c.points[got], d), best = dot(c.points[polytope->scan_index(d)], d);
+      ASSERT_GE(value, best - (tolerance + 8 * kEps * radius) * d.norm()) << k;
+      ASSERT_LE(value, best) << k;
+    }
+  }
+  const auto small = mink::Polytope::make(sphere(int(mink::kHullClimbMinVertices) - 1, 37));
+  ASSERT_TRUE(small.has_value());
+  std::mt19937_64 g(38);
+  for (std::uint32_t k = 0; k < 2 * mink::kPolytopeHullAfterSupports; ++k) {
+    const Vec3 d = unit(g);
+    ASSERT_EQ(small->support_index(d), small->scan_index(d));
+  }
+  EXPECT_FALSE(small->climbs());
+}
+
+// Threads sharing one polytope through its switch: one of them builds the hull while the others
+// go on scanning, and every answer stays a farthest point.
+TEST(HullSupport, PolytopeSwitchesSafelyUnderThreads) {
+  const auto points = sphere(2000, 39);
+  const auto polytope = mink::Polytope::make(points);
+  ASSERT_TRUE(polytope.has_value());
+  std::atomic<int> wrong{0};
+  std::vector<std::thread> threads;
+  for (unsigned t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      std::mt19937_64 g(40 + t);
+      for (int k = 0; k < 4000; ++k) {
+        const Vec3 d = unit(g);
+        const std::size_t got = polytope->support_index(d);
+        const double best = dot(points[polytope->scan_index(d)], d);
+        if (!(got < points.size()) || dot(points[got], d) < best - 1e-9) ++wrong;
+      }
+    });
+  for (std::thread& thread : threads) thread.join();
+  EXPECT_EQ(wrong.load(), 0);
+  EXPECT_TRUE(polytope->climbs());
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 #include <vector>
 
 #include "mink/manifold/manifold.hpp"
@@ -145,6 +146,18 @@ TEST(ManifoldExact, CapsuleLyingOnBoxGivesItsSegmentEnds) {
   }
 }
 
+/// Area of the convex hull of 4 points in a plane of normal n: the largest over the 3 pairings
+/// of the diagonals.
+double quad_area(const std::vector<Vec3>& p, const Vec3& n) {
+  double area = 0;
+  for (int d = 1; d < 4; ++d) {
+    const int o1 = d == 1 ? 2 : 1, o2 = 6 - d - o1;
+    const Vec3 diag1 = p[d] - p[0], diag2 = p[o2] - p[o1];
+    area = std::max(area, 0.5 * std::abs(diag1.cross(diag2).dot(n)));
+  }
+  return area;
+}
+
 TEST(ManifoldExact, CylinderStandingOnBoxGivesRimPoints) {
   for (int k = 0; k < 200; ++k) {
     Rng rng(603000 + k);
@@ -170,19 +183,15 @@ TEST(ManifoldExact, CylinderStandingOnBoxGivesRimPoints) {
     }
     // The four points span the rim: their quadrilateral is the inscribed square (area 2 r^2)
     // when the reduction keeps the largest area.
-    double area = 0;
-    const Vec3 n = scene.up();
-    // Area of the convex hull of 4 points: max over the 3 pairings of the diagonals.
-    for (int d = 1; d < 4; ++d) {
-      const int o1 = d == 1 ? 2 : 1, o2 = 6 - d - o1;
-      const Vec3 diag1 = in_plane[d] - in_plane[0], diag2 = in_plane[o2] - in_plane[o1];
-      area = std::max(area, 0.5 * std::abs(diag1.cross(diag2).dot(n)));
-    }
-    EXPECT_GE(area, 0.95 * 2 * cylinder.radius * cylinder.radius) << oracle::seed_note(603000 + k);
+    EXPECT_GE(quad_area(in_plane, scene.up()), 0.95 * 2 * cylinder.radius * cylinder.radius)
+        << oracle::seed_note(603000 + k);
   }
 }
 
-TEST(ManifoldExact, HullFaceOnBoxFace) {
+/// A pyramid's base face resting on a box face, with the pyramid given as `Hull` (a Polytope,
+/// whose faces the manifold finds by scanning, or a ConvexHullShape, whose edge graph it walks).
+template <class Hull>
+void check_hull_face_on_box_face() {
   for (int k = 0; k < 200; ++k) {
     Rng rng(604000 + k);
     const Scene scene = random_scene(rng);
@@ -199,7 +208,7 @@ TEST(ManifoldExact, HullFaceOnBoxFace) {
     }
     points.push_back(Vec3(0.1, -0.05, rng.uniform(0.3, 1.5)));
     points.push_back(Vec3(0.05, 0.02, 0.1));  // interior
-    const auto hull = mink::Polytope::make(points);
+    const auto hull = Hull::make(points);
     ASSERT_TRUE(hull.has_value());
     const double overlap = rng.log_uniform(1e-6, 0.02);
     const double spin = rng.uniform(0, 7);
@@ -222,6 +231,14 @@ TEST(ManifoldExact, HullFaceOnBoxFace) {
     ASSERT_EQ(s.count, r.count);
     EXPECT_LE((s.normal + r.normal).norm(), 1e-12);
   }
+}
+
+TEST(ManifoldExact, HullFaceOnBoxFace) {
+  check_hull_face_on_box_face<mink::Polytope>();
+}
+
+TEST(ManifoldExact, ConvexHullShapeFaceOnBoxFace) {
+  check_hull_face_on_box_face<mink::ConvexHullShape>();
 }
 
 TEST(ManifoldExact, SphereGivesOnePoint) {
@@ -292,6 +309,67 @@ TEST(ManifoldExact, BoxOnBoxStableUnderTinyRotations) {
       }
     }
   }
+}
+
+// A hull whose resting face has far more corners than a feature holds (a 200-sided prism, which
+// climbs; as a ConvexHullShape and as a Polytope that has switched to its hull): the face still
+// comes whole from the hull's faces, so the 4 points are base corners spread over the whole rim
+// (the inscribed square's area), each at the overlap depth.
+template <class Hull>
+void check_many_corner_face_on_box() {
+  for (int k = 0; k < 50; ++k) {
+    Rng rng(605000 + k);
+    const Scene scene = random_scene(rng);
+    const mink::Box table{{4, 4, 0.5}};
+    const int sides = 200;
+    const double radius = rng.uniform(0.3, 1), height = rng.uniform(0.1, 1);
+    std::vector<Vec3> base, points;
+    for (int i = 0; i < sides; ++i) {
+      const double a = 2 * std::numbers::pi * i / sides;
+      base.push_back(Vec3(radius * std::cos(a), radius * std::sin(a), 0));
+      points.push_back(base.back());
+      points.push_back(base.back() + Vec3(0, 0, height));
+    }
+    const auto prism = Hull::make(points);
+    ASSERT_TRUE(prism.has_value());
+    if constexpr (std::is_same_v<Hull, mink::Polytope>) {
+      // A polytope has faces only once it has switched to its hull (polytope.hpp).
+      for (std::uint32_t i = 0; i < mink::kPolytopeHullAfterSupports; ++i)
+        prism->support_index(rng.unit());
+    }
+    ASSERT_TRUE(prism->climbs());
+    const double overlap = rng.log_uniform(1e-6, 0.02);
+    const Vec3 centre(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.5 - overlap);
+    const Pose pt = scene.place(Vec3::Zero(), Quat::Identity());
+    const Pose pb = scene.place(centre, about_z(rng.uniform(0, 7)));
+    for (const bool swapped : {false, true}) {
+      const ManifoldResult r = swapped ? mink::manifold(prism.value(), pb, table, pt)
+                                       : mink::manifold(table, pt, prism.value(), pb);
+      ASSERT_EQ(r.status, mink::Status::Intersecting) << oracle::seed_note(605000 + k);
+      ASSERT_EQ(r.count, 4) << oracle::seed_note(605000 + k);
+      EXPECT_LE(((swapped ? -1.0 : 1.0) * r.normal - scene.up()).norm(), 1e-9);
+      std::vector<Vec3> in_plane;
+      for (int i = 0; i < 4; ++i) {
+        const Vec3 on_hull = swapped ? r.points[i].point_a : r.points[i].point_b;
+        double nearest_corner = 1e300;
+        for (const Vec3& c : base)
+          nearest_corner = std::min(nearest_corner, (on_hull - pb.apply(c)).norm());
+        EXPECT_LE(nearest_corner, 1e-9 * 10) << oracle::seed_note(605000 + k);
+        EXPECT_NEAR(r.points[i].depth, overlap, 1e-9 * 10);
+        in_plane.push_back(on_hull - pb.translation);
+      }
+      EXPECT_GE(quad_area(in_plane, scene.up()), 0.95 * 2 * radius * radius)
+          << oracle::seed_note(605000 + k);
+    }
+  }
+}
+
+TEST(ManifoldExact, ConvexHullShapeManyCornerFaceOnBox) {
+  check_many_corner_face_on_box<mink::ConvexHullShape>();
+}
+
+TEST(ManifoldExact, SwitchedPolytopeManyCornerFaceOnBox) {
+  check_many_corner_face_on_box<mink::Polytope>();
 }
 
 }  // namespace
