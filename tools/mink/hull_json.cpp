@@ -1,7 +1,6 @@
 #include "hull_json.hpp"
 
 #include <array>
-#include <ranges>
 #include <span>
 
 #include "answer.hpp"
@@ -25,6 +24,18 @@ void append_array(std::string& out, const Range& range, Append&& append) {
     if (!first) out += ',';
     first = false;
     append(item);
+  }
+  out += ']';
+}
+
+/// append_array over the indices first..last-1. (std::views::iota would do, but clang 14 with
+/// libstdc++ 12, the sanitizer build's pair on Debian 12, cannot compile it.)
+template <class Index, class Append>
+void append_index_array(std::string& out, Index first, Index last, Append&& append) {
+  out += '[';
+  for (Index i = first; i < last; ++i) {
+    if (i != first) out += ',';
+    append(i);
   }
   out += ']';
 }
@@ -77,10 +88,9 @@ void write_hull(std::string_view id_json, const ConvexHull& hull, std::string& o
   // Face loops and, edge by edge, the face on the other side.
   const auto append_loops = [&](bool neighbours) {
     append_array(out, hull.faces, [&](const HullFace& face) {
-      append_array(
-          out, std::views::iota(face.first, face.first + face.count), [&](std::uint32_t h) {
-            append_integer(out, neighbours ? hull.neighbor_face(h) : hull.half_edges[h].vertex);
-          });
+      append_index_array(out, face.first, face.first + face.count, [&](std::uint32_t h) {
+        append_integer(out, neighbours ? hull.neighbor_face(h) : hull.half_edges[h].vertex);
+      });
     });
   };
   append_field(out, "faces");
@@ -95,7 +105,7 @@ void write_hull(std::string_view id_json, const ConvexHull& hull, std::string& o
     const std::uint32_t first = hull.neighbor_offsets[v];
     return std::span(hull.neighbors).subspan(first, hull.neighbor_offsets[v + 1] - first);
   };
-  append_array(out, std::views::iota(std::size_t(0), hull.vertices.size()), [&](std::size_t v) {
+  append_index_array(out, std::size_t(0), hull.vertices.size(), [&](std::size_t v) {
     append_array(out, neighbors_of(v), [&](std::uint32_t u) { append_integer(out, u); });
   });
   append_field(out, "face_neighbors");
