@@ -167,48 +167,48 @@ void support_feature(const EllipsoidT<S>& shape, const Vec3T<S>& d, S, SupportFe
 template <class S>
 void support_feature(const BoxT<S>& box, const Vec3T<S>& d, S tolerance, SupportFeatureT<S>& out) {
   // An axis is free when flipping its coordinate changes the height by at most the tolerance.
-  const S length = d.norm();
+  const S limit = tolerance * d.norm();
   const Vec3T<S>& h = box.half_extents;
   const Vec3T<S> corner = box.support_core(d);
-  bool free[3];
-  int n_free = 0;
-  for (int i = 0; i < 3; ++i) {
-    free[i] = S(2) * h[i] * std::abs(d[i]) <= tolerance * length;
-    n_free += free[i];
-  }
-  if (n_free == 3) {
-    // A box small against the tolerance: its face most aligned with d.
-    int k = 0;
-    for (int i = 1; i < 3; ++i)
-      if (std::abs(d[i]) > std::abs(d[k])) k = i;
-    free[k] = false;
-    n_free = 2;
-  }
+  const bool fx = S(2) * h.x() * std::abs(d.x()) <= limit;
+  const bool fy = S(2) * h.y() * std::abs(d.y()) <= limit;
+  const bool fz = S(2) * h.z() * std::abs(d.z()) <= limit;
+  const int n_free = fx + fy + fz;
+  // Points are written whole (no stores to single coordinates picked at run time: those stall
+  // the loads that follow them, and this runs twice per box-box manifold).
   if (n_free == 0) {
     out.set_point(corner);
     return;
   }
   if (n_free == 1) {
-    const int i = free[0] ? 0 : (free[1] ? 1 : 2);
-    Vec3T<S> p = corner, q = corner;
-    p[i] = -h[i];
-    q[i] = h[i];
-    out.set_edge(p, q);
+    // From the free coordinate at -h to +h.
+    const Vec3T<S> mask{S(fx), S(fy), S(fz)};
+    out.set_edge(corner - mask.cwiseProduct(corner + h), corner + mask.cwiseProduct(h - corner));
     return;
   }
-  const int k = !free[0] ? 0 : (!free[1] ? 1 : 2);
-  const int i = (k + 1) % 3, j = (k + 2) % 3;  // e_i x e_j = e_k
+  // A face: the fixed axis k, or for a box small against the tolerance (all free) its face most
+  // aligned with d. Corners counter-clockwise about the outward normal.
+  int k = !fx ? 0 : (!fy ? 1 : 2);
+  if (n_free == 3) {
+    const Vec3T<S> a = d.cwiseAbs();
+    k = a.x() >= a.y() && a.x() >= a.z() ? 0 : (a.y() >= a.z() ? 1 : 2);
+  }
   const S side = detail::sign_nonneg(d[k]);
-  static constexpr S kSigns[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  const Vec3T<S> c = Vec3T<S>::Unit(k) * (side * h[k]);
+  const Vec3T<S> e1 = Vec3T<S>::Unit((k + 1) % 3) * h[(k + 1) % 3];
+  const Vec3T<S> e2 = Vec3T<S>::Unit((k + 2) % 3) * h[(k + 2) % 3];  // e1 x e2 along +e_k
   out.count = 4;
-  out.normal = Vec3T<S>::Zero();
-  out.normal[k] = side;
-  for (int c = 0; c < 4; ++c) {
-    Vec3T<S> p;
-    p[k] = side * h[k];
-    p[i] = kSigns[c][0] * h[i];
-    p[j] = kSigns[c][1] * h[j];
-    out.points[side > S(0) ? c : 3 - c] = p;  // counter-clockwise about the outward normal
+  out.normal = Vec3T<S>::Unit(k) * side;
+  if (side > S(0)) {
+    out.points[0] = c + e1 + e2;
+    out.points[1] = c - e1 + e2;
+    out.points[2] = c - e1 - e2;
+    out.points[3] = c + e1 - e2;
+  } else {
+    out.points[0] = c + e1 - e2;
+    out.points[1] = c - e1 - e2;
+    out.points[2] = c - e1 + e2;
+    out.points[3] = c + e1 + e2;
   }
 }
 

@@ -120,11 +120,72 @@ struct ClippedPoints {
   int count = 0;
   Vec3T<S> on_a[kMaxClipPoints];
   Vec3T<S> on_b[kMaxClipPoints];
-  S depth[kMaxClipPoints];
+  PlanarPoint<S> planar[kMaxClipPoints];  ///< seen along the normal, with the depths
   /// The features were two crossing edges (or an edge and a vertex, or two vertices): no
   /// clipping, `count` is 0 and the caller gives one point.
   SupportFeatureT<S> feature_a, feature_b;
 };
+
+/// The clipping of clip_features() when the reference face is a face of a box with half extents
+/// h: in the box's frame, where the face's side planes are axis aligned. `to_a` takes the box's
+/// frame to A's (nullptr: it is A's); `ref_point` is a corner of the reference face (pushed out by
+/// the radius), `incident` the incident feature, `n` the normal, all in A's frame.
+template <class S>
+void clip_by_box_face(const Vec3T<S>& h, const PoseT<S>* to_a, const Vec3T<S>& face_normal,
+                      const Vec3T<S>& ref_point, const SupportFeatureT<S>& incident,
+                      const Vec3T<S>& n, bool ref_is_a, S min_depth, S slack,
+                      ClippedPoints<S>& out) {
+  auto local_dir = [&](const Vec3T<S>& d) { return to_a ? to_a->inverse_rotate(d) : d; };
+  auto local_point = [&](const Vec3T<S>& p) { return to_a ? to_a->inverse_apply(p) : p; };
+  const Vec3T<S> m = local_dir(face_normal);  // +-e_k up to rounding
+  const Vec3T<S> am = m.cwiseAbs();
+  const int k = am.x() >= am.y() && am.x() >= am.z() ? 0 : (am.y() >= am.z() ? 1 : 2);
+  const int iu = (k + 1) % 3, iv = (k + 2) % 3;
+  const S side = m[k] > S(0) ? S(1) : S(-1);
+  const S w = side * local_point(ref_point)[k];  // the face's plane: side * p[k] = w
+  // Points move along `axis` (the normal, turned to point through the face) onto the plane.
+  const Vec3T<S> nl = local_dir(n);
+  const Vec3T<S> axis = side * nl[k] > S(0) ? nl : Vec3T<S>(-nl);
+  const S inv = S(1) / std::abs(nl[k]);
+  PlanarPoint<S> buffer[2][kMaxClipPoints];
+  int count = incident.count;
+  for (int i = 0; i < count; ++i) {
+    const Vec3T<S> p = local_point(incident.points[i]);
+    const S t = (w - side * p[k]) * inv;
+    buffer[0][i] = {p[iu] + t * axis[iu], side * (p[iv] + t * axis[iv]), t};
+  }
+  // The side lines in the order of the face's edges (counter-clockwise about its normal, which
+  // the factor `side` on y keeps for both faces of the axis): y <= h_v, x >= -h_u, y >= -h_v,
+  // x <= h_u.
+  const S hu = h[iu], hv = h[iv];
+  using P = PlanarPoint<S>;
+  count = clip_by_line(
+      buffer[0], count, [hv](const P& p) { return hv - p.y; }, slack, buffer[1]);
+  count = clip_by_line(
+      buffer[1], count, [hu](const P& p) { return p.x + hu; }, slack, buffer[0]);
+  count = clip_by_line(
+      buffer[0], count, [hv](const P& p) { return p.y + hv; }, slack, buffer[1]);
+  count = clip_by_line(
+      buffer[1], count, [hu](const P& p) { return hu - p.x; }, slack, buffer[0]);
+  const int cur = 0;
+  for (int i = 0; i < count; ++i) {
+    const PlanarPoint<S>& p = buffer[cur][i];
+    if (!(p.depth >= min_depth)) continue;
+    Vec3T<S> on_ref;
+    on_ref[iu] = p.x;
+    on_ref[iv] = side * p.y;
+    on_ref[k] = side * w;
+    Vec3T<S> on_inc = on_ref - p.depth * axis;
+    if (to_a) {
+      on_ref = to_a->apply(on_ref);
+      on_inc = to_a->apply(on_inc);
+    }
+    out.on_a[out.count] = ref_is_a ? on_ref : on_inc;
+    out.on_b[out.count] = ref_is_a ? on_inc : on_ref;
+    out.planar[out.count] = p;
+    ++out.count;
+  }
+}
 
 /// Steps 2 and 3 of manifold.hpp's outline, in A's frame: `rel` is B's pose in A's frame, `n` the
 /// unit normal in A's frame, `min_depth` the least depth kept (negative: a gap).
@@ -188,64 +249,103 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
   }
   const S mn = m.dot(n);
   if (!(std::abs(mn) > S(0.5))) return;  // a face this oblique is not a contact face
-
-  Vec3T<S> buffer[2][kMaxClipPoints];
-  int count = inc->count;
-  std::copy(inc->points, inc->points + count, buffer[0]);
-  int cur = 0;
   // Points up to 1e-8 of the size outside a side plane count as inside: an incident edge that
   // lies along a side plane (equal boxes stacked flush) and is turned by rounding or a 1e-9
   // rotation would otherwise be cut at an arbitrary point along its length, and the manifold
   // would flicker between corners and such points.
   const S slack = S(1e-8) * size;
   if (ref->count >= 3) {
-    // Side planes parallel to the normal, not to the face normal m: the clipped points then
-    // move along the normal onto the face and stay inside it when the face is tilted.
-    const Vec3T<S> axis = mn > S(0) ? n : Vec3T<S>(-n);
-    for (int i = 0; i < ref->count && count > 0; ++i) {
-      const Vec3T<S>& r0 = ref->points[i];
-      const Vec3T<S>& r1 = ref->points[(i + 1) % ref->count];
-      const Vec3T<S> s = axis.cross(r1 - r0);  // inward: counter-clockwise about m
-      count = detail::clip_by_plane(buffer[cur], count, s, s.dot(r0), slack * s.norm(),
-                                    buffer[1 - cur]);
-      cur = 1 - cur;
+    if constexpr (BoxCore<A>::value) {
+      const PoseT<S>* a_frame = nullptr;  // A's frame is the frame of the results
+      if (ref_is_a)
+        return clip_by_box_face(BoxCore<A>::half_extents(a), a_frame, m, ref->points[0], *inc, n,
+                                true, min_depth, slack, out);
     }
-  } else {
-    const Vec3T<S> edge = ref->points[1] - ref->points[0];
-    const Vec3T<S> e = edge - edge.dot(n) * n;
-    count = detail::clip_by_plane(buffer[cur], count, e, e.dot(ref->points[0]), slack * e.norm(),
-                                  buffer[1 - cur]);
-    cur = 1 - cur;
-    count = detail::clip_by_plane(buffer[cur], count, Vec3T<S>(-e), -e.dot(ref->points[1]),
-                                  slack * e.norm(), buffer[1 - cur]);
-    cur = 1 - cur;
+    if constexpr (BoxCore<B>::value) {
+      if (!ref_is_a)
+        return clip_by_box_face(BoxCore<B>::half_extents(b), &rel, m, ref->points[0], *inc, n,
+                                false, min_depth, slack, out);
+    }
   }
+
+  // Seen along the normal: every point is projected along n onto the plane of (u, v) and clipped
+  // there in 2D, which is clipping by the planes that contain the normal (not the face normal m:
+  // the clipped points then move along the normal onto the face and stay inside it when the face
+  // is tilted). Each point carries its depth: its distance along the normal to the reference
+  // plane m . p = w.
+  Vec3T<S> u, v;
+  plane_basis(n, u, v);
   S w = -std::numeric_limits<S>::infinity();
   for (int i = 0; i < ref->count; ++i) w = std::max(w, m.dot(ref->points[i]));
   const S inv = S(1) / std::abs(mn);
+  PlanarPoint<S> buffer[2][kMaxClipPoints];
+  int count = inc->count;
   for (int i = 0; i < count; ++i) {
-    const Vec3T<S>& p = buffer[cur][i];
-    const S t = (w - m.dot(p)) * inv;
-    if (!(t >= min_depth)) continue;
-    out.on_a[out.count] = ref_is_a ? Vec3T<S>(p + t * n) : p;
-    out.on_b[out.count] = ref_is_a ? p : Vec3T<S>(p - t * n);
-    out.depth[out.count] = t;
+    const Vec3T<S>& p = inc->points[i];
+    buffer[0][i] = {u.dot(p), v.dot(p), (w - m.dot(p)) * inv};
+  }
+  int cur = 0;
+  // The clip lines a x + b y >= c - slack |(a, b)|, all set up before any clipping (their square
+  // roots then overlap instead of waiting on each other).
+  struct Line {
+    S a, b, c, slack;
+  };
+  Line lines[kMaxFeaturePoints];
+  int line_count = 0;
+  auto add_line = [&](S nx, S ny, const Vec3T<S>& through) {
+    lines[line_count++] = {nx, ny, nx * u.dot(through) + ny * v.dot(through),
+                           slack * std::sqrt(nx * nx + ny * ny)};
+  };
+  if (ref->count >= 3) {
+    // The polygon is counter-clockwise about m, so about n when m . n > 0: its inside is on the
+    // left of each edge.
+    const S side = mn > S(0) ? S(1) : S(-1);
+    for (int i = 0; i < ref->count; ++i) {
+      const Vec3T<S>& r0 = ref->points[i];
+      const Vec3T<S> edge = ref->points[i + 1 == ref->count ? 0 : i + 1] - r0;
+      add_line(-side * v.dot(edge), side * u.dot(edge), r0);
+    }
+  } else {
+    // Between the planes through the edge's ends, across the edge.
+    const Vec3T<S> edge = ref->points[1] - ref->points[0];
+    const S ex = u.dot(edge), ey = v.dot(edge);
+    add_line(ex, ey, ref->points[0]);
+    add_line(-ex, -ey, ref->points[1]);
+  }
+  for (int i = 0; i < line_count && count > 0; ++i) {
+    const Line& l = lines[i];
+    count = clip_by_line(
+        buffer[cur], count, [&l](const PlanarPoint<S>& p) { return l.a * p.x + l.b * p.y - l.c; },
+        l.slack, buffer[1 - cur]);
+    cur = 1 - cur;
+  }
+  const S inv_mn = S(1) / mn;
+  for (int i = 0; i < count; ++i) {
+    const PlanarPoint<S>& p = buffer[cur][i];
+    if (!(p.depth >= min_depth)) continue;
+    // Back to 3D: the point of the reference plane above (x, y) along n, and the incident point
+    // `depth` below it.
+    const Vec3T<S> in_plane = p.x * u + p.y * v;
+    const Vec3T<S> on_ref = in_plane + ((w - m.dot(in_plane)) * inv_mn) * n;
+    const Vec3T<S> on_inc = on_ref + (mn > S(0) ? -p.depth : p.depth) * n;
+    out.on_a[out.count] = ref_is_a ? on_ref : on_inc;
+    out.on_b[out.count] = ref_is_a ? on_inc : on_ref;
+    out.planar[out.count] = p;
     ++out.count;
   }
 }
 
 /// Step 4 and the world frame: reduces `clipped` to at most four points of `result`.
 template <class S>
-void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, const Vec3T<S>& n, S size,
+void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
                ManifoldResultT<S>& result) {
   int keep[4];
-  const int kept =
-      detail::reduce_to_four(clipped.on_b, clipped.depth, clipped.count, n, S(1e-9) * size, keep);
+  const int kept = detail::reduce_to_four(clipped.planar, clipped.count, S(1e-9) * size, keep);
   result.count = kept;
   for (int i = 0; i < kept; ++i) {
     result.points[i].point_a = pose_a.apply(clipped.on_a[keep[i]]);
     result.points[i].point_b = pose_a.apply(clipped.on_b[keep[i]]);
-    result.points[i].depth = clipped.depth[keep[i]];
+    result.points[i].depth = clipped.planar[keep[i]].depth;
   }
 }
 
@@ -275,7 +375,7 @@ ManifoldResultT<typename A::Scalar> manifold_from_contact(
   clip_features(a, b, pose_a.relative(pose_b), n, options.feature_tolerance, min_depth, size,
                 clipped);
   if (clipped.count > 0) {
-    keep_four(clipped, pose_a, n, size, result);
+    keep_four(clipped, pose_a, size, result);
   } else {
     // A vertex, crossing edges, or features that the clipping could not match: the contact's
     // deepest (or closest) points.
@@ -323,7 +423,7 @@ manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
                                            on_a, on_b);
         clipped.on_a[0] = on_a;
         clipped.on_b[0] = on_b;
-        clipped.depth[0] = (on_a - on_b).dot(axis.normal);
+        clipped.planar[0] = {S(0), S(0), (on_a - on_b).dot(axis.normal)};
         clipped.count = 1;
       }
       if (clipped.count > 0) {
@@ -331,7 +431,7 @@ manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
         result.intersect = true;
         result.depth = axis.overlap + a.core_radius() + b.core_radius();
         result.normal = pose_a.rotate(axis.normal);
-        detail::keep_four(clipped, pose_a, axis.normal, size, result);
+        detail::keep_four(clipped, pose_a, size, result);
         return result;
       }
     }

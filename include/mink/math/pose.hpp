@@ -35,6 +35,9 @@ struct PoseT {
   Vec3T<S> apply(const Vec3T<S>& local) const { return rotation * local + translation; }
   Vec3T<S> rotate(const Vec3T<S>& local) const { return rotation * local; }
   Vec3T<S> inverse_rotate(const Vec3T<S>& world) const { return rotation.transpose() * world; }
+  Vec3T<S> inverse_apply(const Vec3T<S>& world) const {
+    return rotation.transpose() * (world - translation);
+  }
 
   /// The pose of `other` expressed in this pose's frame: this^-1 * other. Always inlined: it is
   /// the set-up of every query, and out of line it costs as much as a one-iteration GJK.
