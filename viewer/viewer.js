@@ -584,12 +584,17 @@ fillPanel();
 resize();
 fromHash();
 
-// For tests and scripts: where a world point lands on the page, in CSS pixels.
+// For tests and scripts (tests/viewer): set once the first picture is drawn. project() tells where
+// a world point lands on the page, in CSS pixels; scale(i) is the length the markers and arrows of
+// query i are sized by (a marker's radius is 0.025 of it, the normal's arrow 0.45).
 window.minkView = {
   ready: true,
   items: items.length,
   errors: items.filter((it) => it.error).length,
+  background: '#' + scene.background.getHexString(),
   mode: () => state.mode,
+  current: () => state.index,
+  scale: (i) => (items[i] && items[i].scale) || null,
   project(p) {
     const v = vec(p).project(camera);
     const rect = renderer.domElement.getBoundingClientRect();
