@@ -20,9 +20,32 @@ mink_need() {
     { $sudo apt-get update -qq && $sudo apt-get install -y --no-install-recommends "${missing[@]}"; }
 }
 
+# Like mink_need, but only warns when the packages cannot be installed: for what adds to the build
+# or the tests without being required (without node and npm the tool is built without the page of
+# `mink view`; without Chromium the viewer test reports itself skipped).
+mink_want() {
+  mink_need "$@" || echo "mink: warning: could not install $*; going on without" >&2
+}
+
+# Pairs of a command and the Debian package that provides it: mink_want the packages of the
+# commands that are missing. A command found elsewhere is kept (NodeSource's nodejs, for one,
+# bundles npm and conflicts with Debian's npm package).
+mink_want_commands() {
+  local packages=()
+  while [ $# -ge 2 ]; do
+    command -v "$1" >/dev/null 2>&1 || packages+=("$2")
+    shift 2
+  done
+  [ ${#packages[@]} -eq 0 ] || mink_want "${packages[@]}"
+}
+
 # What building the library, the tool and the tests needs.
 MINK_BUILD_PACKAGES=(g++ cmake ninja-build libeigen3-dev libsimdjson-dev libcli11-dev libgtest-dev
   libcgal-dev libgmp-dev libmpfr-dev)
+# What the page of `mink view` needs at build time (three.js from npm), and what its test opens it
+# in (tests/viewer): command, package pairs for mink_want_commands.
+MINK_VIEWER_COMMANDS=(node nodejs npm npm)
+MINK_BROWSER_COMMANDS=(chromium chromium)
 # What the benchmarks add: the peers.
 MINK_BENCH_PACKAGES=(libbenchmark-dev libccd-dev libfcl-dev libbullet-dev libqhull-dev python3)
 
