@@ -61,7 +61,8 @@ export function launchChromium(binary, args) {
   return {
     process: child,
     log: () => log,
-    // Sends one command (to the browser, or to a page when sessionId is given); resolves to its result.
+    // Sends one command (to the browser, or to a page when sessionId is given); resolves to its
+    // result.
     send(method, params = {}, sessionId = undefined) {
       if (exited) return Promise.reject(new Error(exited));
       const id = nextId++;

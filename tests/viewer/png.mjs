@@ -26,7 +26,8 @@ export function decodePng(png) {
     }
   }
   if (depth !== 8 || interlace !== 0 || (colorType !== 2 && colorType !== 6))
-    throw new Error(`unsupported PNG: bit depth ${depth}, colour type ${colorType}, interlace ${interlace}`);
+    throw new Error(`unsupported PNG: bit depth ${depth}, colour type ${colorType}, ` +
+                    `interlace ${interlace}`);
   const channels = colorType === 6 ? 4 : 3;
   const stride = width * channels;
   const raw = inflateSync(Buffer.concat(idat));

@@ -9,7 +9,9 @@
 // missing at its projected centre, or a manifold point, witness point or normal missing where the
 // answer puts it. Exit 0: passed; 1: failed; 77: skipped (no Chromium here). docs/viewer.md.
 import { spawnSync } from 'node:child_process';
-import { accessSync, constants, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import {
+  accessSync, constants, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync,
+} from 'node:fs';
 import { delimiter, join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
@@ -89,7 +91,8 @@ const check = (ok, message) => {
 const queries = readFileSync(scenePath, 'utf8').split('\n').filter((l) => l.trim() !== '')
   .map((l) => JSON.parse(l));
 run(['view', scenePath, '-o', pagePath]);
-const answers = run(['query', scenePath]).split('\n').filter((l) => l !== '').map((l) => JSON.parse(l));
+const answers = run(['query', scenePath]).split('\n').filter((l) => l !== '')
+  .map((l) => JSON.parse(l));
 if (answers.length !== queries.length) {
   console.error(`mink query gave ${answers.length} answers to ${queries.length} queries`);
   process.exit(1);
@@ -171,7 +174,8 @@ async function main() {
     : a.description || a.type).join(' ');
   browser.onEvent(({ method, params, sessionId: from }) => {
     if (from !== sessionId) return;
-    if (method === 'Runtime.consoleAPICalled' && (params.type === 'error' || params.type === 'assert'))
+    const consoleError = params && (params.type === 'error' || params.type === 'assert');
+    if (method === 'Runtime.consoleAPICalled' && consoleError)
       consoleErrors.push(`console.${params.type}: ${describe(params.args)}`);
     else if (method === 'Runtime.exceptionThrown') {
       const d = params.exceptionDetails;
@@ -188,15 +192,16 @@ async function main() {
              { width: WIDTH, height: HEIGHT, deviceScaleFactor: 1, mobile: false });
 
   const evaluate = async (expression) => {
-    const { result, exceptionDetails } = await send('Runtime.evaluate',
-                                                   { expression, returnByValue: true, awaitPromise: true });
+    const { result, exceptionDetails } =
+      await send('Runtime.evaluate', { expression, returnByValue: true, awaitPromise: true });
     if (exceptionDetails)
       throw new Error(`evaluating ${expression.slice(0, 60)}...: ${exceptionDetails.exception
         ? exceptionDetails.exception.description : exceptionDetails.text}`);
     return result.value;
   };
   // Two animation frames: whatever was drawn has reached the screen.
-  const settle = () => evaluate('new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))');
+  const settle = () =>
+    evaluate('new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))');
   const screenshot = async (name) => {
     const { data } = await send('Page.captureScreenshot', { format: 'png' });
     const png = Buffer.from(data, 'base64');
@@ -229,20 +234,22 @@ async function main() {
       canvas: [canvas.left, canvas.top, canvas.width, canvas.height],
       summary: document.getElementById('summary').textContent,
       entries: [...document.querySelectorAll('#answers li')].map((li) => {
-        const row = [...li.querySelectorAll('tr')].find((tr) => tr.cells[0].textContent === 'status');
+        const rows = [...li.querySelectorAll('tr')];
+        const row = rows.find((tr) => tr.cells[0].textContent === 'status');
         return {
           error: li.classList.contains('error'),
           id: li.querySelector('.id').textContent,
           status: row ? row.cells[1].textContent : null,
           message: (li.querySelector('.message') || {}).textContent || null,
-          manifold: [...li.querySelectorAll('tr')].filter((tr) => /^ +[0-9]+$/.test(tr.cells[0].textContent)).length,
+          manifold: rows.filter((tr) => /^ +[0-9]+$/.test(tr.cells[0].textContent)).length,
         };
       }),
     };
   })()`);
   const errorCount = answers.filter((a) => a.status === 'error').length;
   check(view.items === answers.length && view.errors === errorCount,
-        `minkView counts ${view.items} queries, ${view.errors} errors; expected ${answers.length}, ${errorCount}`);
+        `minkView counts ${view.items} queries, ${view.errors} errors; ` +
+        `expected ${answers.length}, ${errorCount}`);
   check(view.summary.startsWith(`${answers.length} queries`),
         `summary "${view.summary}" does not start with "${answers.length} queries"`);
   check(view.entries.length === answers.length,
@@ -259,15 +266,18 @@ async function main() {
       check(!e.error && e.status === a.status,
             `${what}: expected status ${a.status}, got ${JSON.stringify(e)}`);
       const points = a.manifold ? a.manifold.points.length : 0;
-      check(e.manifold === points, `${what}: lists ${e.manifold} manifold points, expected ${points}`);
+      check(e.manifold === points,
+            `${what}: lists ${e.manifold} manifold points, expected ${points}`);
     }
   });
   check(view.mode === 'all', `the scene should open showing all queries, mode is ${view.mode}`);
   const background = [1, 3, 5].map((k) => parseInt(view.background.slice(k, k + 2), 16));
 
   // ----- all queries at once: the picture is not blank and every shape is where it should be
-  const drawn = answers.map((a, i) => ({ a, q: queries[i], index: i })).filter((x) => x.a.status !== 'error');
-  const project = (points) => evaluate(`${JSON.stringify(points)}.map((p) => window.minkView.project(p))`);
+  const drawn = answers.map((a, i) => ({ a, q: queries[i], index: i }))
+    .filter((x) => x.a.status !== 'error');
+  const project = (points) =>
+    evaluate(`${JSON.stringify(points)}.map((p) => window.minkView.project(p))`);
   const shapeChecks = async (image, items, label) => {
     for (const { q, index } of items) {
       const centres = await project([(q.pa && q.pa.t) || [0, 0, 0], (q.pb && q.pb.t) || [0, 0, 0]]);
@@ -277,7 +287,8 @@ async function main() {
         const own = count(patch, hue[which]);
         check(off >= 0.8 * patch.length && own >= 0.3 * patch.length,
               `${label}: query ${index + 1} shape ${which} not drawn at its centre ` +
-              `(${centres[k].map(Math.round)}): ${off}/${patch.length} pixels off the background, ` +
+              `(${centres[k].map(Math.round)}): ${off}/${patch.length} pixels off the ` +
+              'background, ' +
               `${own} of its colour`);
       });
     }
@@ -293,9 +304,10 @@ async function main() {
       }
     const fraction = off / (width * height);
     console.log(`all queries: ${(100 * fraction).toFixed(1)}% of the picture is not background`);
-    check(fraction > 0.03, `the picture is blank: only ${(100 * fraction).toFixed(2)}% of it differs ` +
-                           `from the background ${view.background}`);
-    check(count(pixelsAround(image, [left + 4, top + 4], 2), (p) => distance(p, background) <= 2) === 25,
+    check(fraction > 0.03, `the picture is blank: only ${(100 * fraction).toFixed(2)}% of it ` +
+                           `differs from the background ${view.background}`);
+    const corner = pixelsAround(image, [left + 4, top + 4], 2);
+    check(count(corner, (p) => distance(p, background) <= 2) === corner.length,
           `the picture's corner is not the background colour ${view.background}`);
   }
   await shapeChecks(image, drawn, 'all queries');
@@ -305,17 +317,19 @@ async function main() {
   for (const { a, q, index } of drawn) {
     await evaluate(`document.querySelectorAll('#answers li')[${index}].click()`);
     await settle();
-    const state = await evaluate('[window.minkView.mode(), window.minkView.current(), window.minkView.scale(' +
-                                 index + ')]');
+    const state = await evaluate(
+      `[window.minkView.mode(), window.minkView.current(), window.minkView.scale(${index})]`);
     const label = `query ${index + 1} alone`;
-    if (!check(state[0] === 'one' && state[1] === index, `${label}: a click on its entry shows ${state}`))
+    const shown = state[0] === 'one' && state[1] === index;
+    if (!check(shown, `${label}: a click on its entry shows ${state}`))
       continue;
     const scale = state[2];
     image = await screenshot(`query${index + 1}`);
     await shapeChecks(image, [{ q, index }], label);
     const marks = [];
     if (a.manifold) {
-      for (const p of a.manifold.points) marks.push(['manifold point', p.position, COLOR.manifold, 8]);
+      for (const p of a.manifold.points)
+        marks.push(['manifold point', p.position, COLOR.manifold, 8]);
     } else {
       marks.push(['point_a', a.point_a, COLOR.pointA, 4], ['point_b', a.point_b, COLOR.pointB, 4]);
       // The normal's arrow head: from 0.33 to 0.45 of the scale along the normal from point_a.
