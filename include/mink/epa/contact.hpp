@@ -12,7 +12,9 @@
 /// How: GJK on the cores (core + radius, see architecture.md). If the cores are apart, the shapes
 /// are separated when the core distance exceeds the sum of the radii and penetrate by the
 /// difference otherwise: exact for spheres and capsules, no EPA. Only when the cores themselves
-/// meet does EPA (epa.hpp) run on them, and the radii are added to its depth.
+/// meet does EPA (epa.hpp) run on them, and the radii are added to its depth. Two boxes (or
+/// rounded boxes) whose cores overlap skip GJK and EPA: the separating axis test
+/// (manifold/box_box.hpp) gives the same depth and normal exactly, and `iterations` is 0.
 ///
 /// Ties: when several normals are equally good the query returns one of them and sets
 /// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric
@@ -20,7 +22,7 @@
 /// capsules whose segments cross (the common perpendicular of the segments, sign towards B's side
 /// when it can be told) or overlap along a line (the line of centres' orthogonal part). Coincident
 /// boxes are not ties of this kind: their Minkowski difference has volume, and the normal is the
-/// axis of a face of least depth (the first EPA meets when several tie).
+/// axis of a face of least depth (the first in the order A's x, y, z, then B's, when several tie).
 ///
 /// Tolerances: distances within `tolerances.relative * size` of zero count as touching
 /// (intersecting, depth 0); EPA stops when its bounds on the core depth are within
@@ -30,6 +32,7 @@
 #include "mink/epa/epa.hpp"
 #include "mink/gjk/distance.hpp"
 #include "mink/gjk/segment_cores.hpp"
+#include "mink/manifold/clip_features.hpp"
 
 namespace mink {
 
@@ -111,6 +114,36 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       result.status = result.intersect ? Status::Intersecting : Status::Separated;
       return result;
     }
+  }
+  if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
+    // Two boxes whose cores overlap: the separating axis test is EPA's depth and normal, exact
+    // and in a fixed number of flops, and the deepest point of the manifold's clipping gives the
+    // witness points (a point of B's deepest feature that lies over A's face, or the reverse, or
+    // the closest points of two crossing edges).
+    const PoseT<S> rel = pose_a.relative(pose_b);
+    const auto axis = detail::box_box_axis(detail::BoxCore<A>::half_extents(a),
+                                           detail::BoxCore<B>::half_extents(b), rel.rotation,
+                                           rel.translation, S(1e-9) * size);
+    if (axis.overlap > touch) {
+      // Features only where flat to rounding (1e-9): a rounded face tilted within a coarser
+      // tolerance is moved out along its own normal, off the surface by up to r t^2 / 2, and
+      // the witnesses must be exact. The true support point is always among the clipped ones.
+      detail::ClippedPoints<S> clipped;
+      detail::clip_box_pair(a, b, rel, axis.normal, S(1e-9), -touch, size, clipped);
+      if (clipped.count > 0) {
+        int deepest = 0;
+        for (int i = 1; i < clipped.count; ++i)
+          if (clipped.planar[i].depth > clipped.planar[deepest].depth) deepest = i;
+        result.status = Status::Intersecting;
+        result.intersect = true;
+        result.depth = axis.overlap + radius_a + radius_b;
+        result.normal = pose_a.rotate(axis.normal);
+        result.point_a = pose_a.apply(clipped.on_a[deepest]);
+        result.point_b = pose_a.apply(clipped.on_b[deepest]);
+        return result;
+      }
+    }
+    // Touching or apart: GJK below.
   }
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const auto gjk = detail::run_gjk_distance(diff, radius_a + radius_b, size, tolerances, cache);

@@ -1,0 +1,285 @@
+/// @file clip_features.hpp
+/// Steps 2 and 3 of a contact manifold (manifold.hpp): the support features of both shapes along
+/// the normal, the reference and incident feature, and the incident feature clipped against the
+/// reference's side planes, each point with its own depth. Also the box-box case that contact()
+/// uses for its deepest points.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "mink/gjk/segment_cores.hpp"
+#include "mink/manifold/box_box.hpp"
+#include "mink/manifold/clip.hpp"
+#include "mink/manifold/feature.hpp"
+
+namespace mink::detail {
+
+/// Box and Rounded<Box> (the run-time Shape's single box core), for the separating-axis path.
+template <class T>
+struct BoxCore : std::false_type {};
+template <class S>
+struct BoxCore<BoxT<S>> : std::true_type {
+  static const Vec3T<S>& half_extents(const BoxT<S>& b) { return b.half_extents; }
+};
+template <class S>
+struct BoxCore<Rounded<BoxT<S>>> : std::true_type {
+  static const Vec3T<S>& half_extents(const Rounded<BoxT<S>>& b) { return b.shape.half_extents; }
+};
+
+/// The clipped contact points in A's frame, before reduction.
+template <class S>
+struct ClippedPoints {
+  int count = 0;
+  Vec3T<S> on_a[kMaxClipPoints];
+  Vec3T<S> on_b[kMaxClipPoints];
+  PlanarPoint<S> planar[kMaxClipPoints];  ///< seen along the normal, with the depths
+  /// The features were two crossing edges (or an edge and a vertex, or two vertices): no
+  /// clipping, `count` is 0 and the caller gives one point.
+  SupportFeatureT<S> feature_a, feature_b;
+
+  /// Appends a point from its position on the reference feature and on the incident one.
+  void add(const Vec3T<S>& on_ref, const Vec3T<S>& on_inc, bool ref_is_a, const PlanarPoint<S>& p) {
+    on_a[count] = ref_is_a ? on_ref : on_inc;
+    on_b[count] = ref_is_a ? on_inc : on_ref;
+    planar[count] = p;
+    ++count;
+  }
+};
+
+/// The clipping of clip_features() when the reference face is a face of a box with half extents
+/// h: in the box's frame, where the face's side planes are axis aligned. `to_a` takes the box's
+/// frame to A's (nullptr: it is A's); `ref_point` is a corner of the reference face (pushed out by
+/// the radius), `incident` the incident feature, `n` the normal, all in A's frame.
+template <class S>
+void clip_by_box_face(const Vec3T<S>& h, const PoseT<S>* to_a, const Vec3T<S>& face_normal,
+                      const Vec3T<S>& ref_point, const SupportFeatureT<S>& incident,
+                      const Vec3T<S>& n, bool ref_is_a, S min_depth, S slack,
+                      ClippedPoints<S>& out) {
+  auto local_dir = [&](const Vec3T<S>& d) { return to_a ? to_a->inverse_rotate(d) : d; };
+  auto local_point = [&](const Vec3T<S>& p) { return to_a ? to_a->inverse_apply(p) : p; };
+  const Vec3T<S> m = local_dir(face_normal);  // +-e_k up to rounding
+  const Vec3T<S> am = m.cwiseAbs();
+  const int k = am.x() >= am.y() && am.x() >= am.z() ? 0 : (am.y() >= am.z() ? 1 : 2);
+  const int iu = (k + 1) % 3, iv = (k + 2) % 3;
+  const S side = m[k] > S(0) ? S(1) : S(-1);
+  const S w = side * local_point(ref_point)[k];  // the face's plane: side * p[k] = w
+  // Points move along `axis` (the normal, turned to point through the face) onto the plane.
+  const Vec3T<S> nl = local_dir(n);
+  const Vec3T<S> axis = side * nl[k] > S(0) ? nl : Vec3T<S>(-nl);
+  const S inv = S(1) / std::abs(nl[k]);
+  PlanarPoint<S> buffer[2][kMaxClipPoints];
+  int count = incident.count;
+  for (int i = 0; i < count; ++i) {
+    const Vec3T<S> p = local_point(incident.points[i]);
+    const S t = (w - side * p[k]) * inv;
+    buffer[0][i] = {p[iu] + t * axis[iu], side * (p[iv] + t * axis[iv]), t};
+  }
+  // The side lines in the order of the face's edges (counter-clockwise about its normal, which
+  // the factor `side` on y keeps for both faces of the axis): y <= h_v, x >= -h_u, y >= -h_v,
+  // x <= h_u.
+  const S hu = h[iu], hv = h[iv];
+  // A feature inside the face (a small box on a large one) needs no clipping.
+  bool inside = true;
+  for (int i = 0; i < count; ++i)
+    inside =
+        inside && std::abs(buffer[0][i].x) <= hu + slack && std::abs(buffer[0][i].y) <= hv + slack;
+  if (!inside) {
+    using P = PlanarPoint<S>;
+    count = clip_by_line(
+        buffer[0], count, [hv](const P& p) { return hv - p.y; }, slack, buffer[1]);
+    count = clip_by_line(
+        buffer[1], count, [hu](const P& p) { return p.x + hu; }, slack, buffer[0]);
+    count = clip_by_line(
+        buffer[0], count, [hv](const P& p) { return p.y + hv; }, slack, buffer[1]);
+    count = clip_by_line(
+        buffer[1], count, [hu](const P& p) { return hu - p.x; }, slack, buffer[0]);
+  }
+  const int cur = 0;
+  for (int i = 0; i < count; ++i) {
+    const PlanarPoint<S>& p = buffer[cur][i];
+    if (!(p.depth >= min_depth)) continue;
+    Vec3T<S> on_ref;
+    on_ref[iu] = p.x;
+    on_ref[iv] = side * p.y;
+    on_ref[k] = side * w;
+    Vec3T<S> on_inc = on_ref - p.depth * axis;
+    if (to_a) {
+      on_ref = to_a->apply(on_ref);
+      on_inc = to_a->apply(on_inc);
+    }
+    out.add(on_ref, on_inc, ref_is_a, p);
+  }
+}
+
+/// Steps 2 and 3 of manifold.hpp's outline, in A's frame: `rel` is B's pose in A's frame, `n` the
+/// unit normal in A's frame, `min_depth` the least depth kept (negative: a gap).
+template <ConvexShape A, ConvexShape B>
+void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
+                   const Vec3T<typename A::Scalar>& n, typename A::Scalar feature_tolerance,
+                   typename A::Scalar min_depth, typename A::Scalar size,
+                   ClippedPoints<typename A::Scalar>& out) {
+  using S = typename A::Scalar;
+  auto& fa = out.feature_a;
+  auto& fb = out.feature_b;
+  support_feature_of(a, n, feature_tolerance * a.bounding_radius(), fa);
+  support_feature_of(b, rel.inverse_rotate(-n), feature_tolerance * b.bounding_radius(), fb);
+  fb.normal = rel.rotate(fb.normal);
+  // The radius moves a face along its own normal (exact: the rounded surface over a face is the
+  // face moved out) and an edge or a vertex along the contact normal.
+  const Vec3T<S> push_a = a.core_radius() * (fa.count >= 3 ? fa.normal : n);
+  const Vec3T<S> push_b = b.core_radius() * (fb.count >= 3 ? fb.normal : Vec3T<S>(-n));
+  for (int i = 0; i < fa.count; ++i) fa.points[i] += push_a;
+  for (int i = 0; i < fb.count; ++i) fb.points[i] = rel.apply(fb.points[i]) + push_b;
+  out.count = 0;
+
+  // The reference feature: a face (>= 3 points) with its plane (normal m, offset w) and side
+  // planes, or an edge with its end planes.
+  const SupportFeatureT<S>* ref;
+  const SupportFeatureT<S>* inc;
+  bool ref_is_a;
+  Vec3T<S> m;
+  if (fa.count >= 3 || fb.count >= 3) {
+    if (fa.count >= 3 && fb.count >= 3) {
+      const S align_a = fa.normal.dot(n), align_b = -fb.normal.dot(n);
+      auto area = [](const SupportFeatureT<S>& f) {
+        Vec3T<S> sum = Vec3T<S>::Zero();
+        for (int i = 1; i + 1 < f.count; ++i)
+          sum += (f.points[i] - f.points[0]).cross(f.points[i + 1] - f.points[0]);
+        return sum.norm();
+      };
+      if (std::abs(align_a - align_b) > S(1e-3))
+        ref_is_a = align_a > align_b;
+      else
+        ref_is_a = area(fa) >= area(fb) * (S(1) - S(1e-6));
+    } else {
+      ref_is_a = fa.count >= 3;
+    }
+    ref = ref_is_a ? &fa : &fb;
+    inc = ref_is_a ? &fb : &fa;
+    m = ref->normal;
+  } else if (fa.count == 2 && fb.count == 2) {
+    const Vec3T<S> ea = fa.points[1] - fa.points[0], eb = fb.points[1] - fb.points[0];
+    const S la = ea.norm();
+    // Parallel when B's edge strays from A's line by at most the tolerance over its length.
+    if (!(la > S(0)) || ea.cross(eb).norm() > feature_tolerance * size * la) return;
+    ref_is_a = true;
+    ref = &fa;
+    inc = &fb;
+    m = n - n.dot(ea / la) * (ea / la);
+    if (!(m.norm() > S(0.5))) return;
+    m.normalize();
+  } else {
+    return;
+  }
+  const S mn = m.dot(n);
+  if (!(std::abs(mn) > S(0.5))) return;  // a face this oblique is not a contact face
+  // Points up to 1e-8 of the size outside a side plane count as inside: an incident edge that
+  // lies along a side plane (equal boxes stacked flush) and is turned by rounding or a 1e-9
+  // rotation would otherwise be cut at an arbitrary point along its length, and the manifold
+  // would flicker between corners and such points.
+  const S slack = S(1e-8) * size;
+  if (ref->count >= 3) {
+    if constexpr (BoxCore<A>::value) {
+      const PoseT<S>* a_frame = nullptr;  // A's frame is the frame of the results
+      if (ref_is_a)
+        return clip_by_box_face(BoxCore<A>::half_extents(a), a_frame, m, ref->points[0], *inc, n,
+                                true, min_depth, slack, out);
+    }
+    if constexpr (BoxCore<B>::value) {
+      if (!ref_is_a)
+        return clip_by_box_face(BoxCore<B>::half_extents(b), &rel, m, ref->points[0], *inc, n,
+                                false, min_depth, slack, out);
+    }
+  }
+
+  // Seen along the normal: every point is projected along n onto the plane of (u, v) and clipped
+  // there in 2D, which is clipping by the planes that contain the normal (not the face normal m:
+  // the clipped points then move along the normal onto the face and stay inside it when the face
+  // is tilted). Each point carries its depth: its distance along the normal to the reference
+  // plane m . p = w.
+  Vec3T<S> u, v;
+  plane_basis(n, u, v);
+  S w = -std::numeric_limits<S>::infinity();
+  for (int i = 0; i < ref->count; ++i) w = std::max(w, m.dot(ref->points[i]));
+  const S inv = S(1) / std::abs(mn);
+  PlanarPoint<S> buffer[2][kMaxClipPoints];
+  int count = inc->count;
+  for (int i = 0; i < count; ++i) {
+    const Vec3T<S>& p = inc->points[i];
+    buffer[0][i] = {u.dot(p), v.dot(p), (w - m.dot(p)) * inv};
+  }
+  int cur = 0;
+  // The clip lines a x + b y >= c - slack |(a, b)|, all set up before any clipping (their square
+  // roots then overlap instead of waiting on each other).
+  struct Line {
+    S a, b, c, slack;
+  };
+  Line lines[kMaxFeaturePoints];
+  int line_count = 0;
+  auto add_line = [&](S nx, S ny, const Vec3T<S>& through) {
+    lines[line_count++] = {nx, ny, nx * u.dot(through) + ny * v.dot(through),
+                           slack * std::sqrt(nx * nx + ny * ny)};
+  };
+  if (ref->count >= 3) {
+    // The polygon is counter-clockwise about m, so about n when m . n > 0: its inside is on the
+    // left of each edge.
+    const S side = mn > S(0) ? S(1) : S(-1);
+    for (int i = 0; i < ref->count; ++i) {
+      const Vec3T<S>& r0 = ref->points[i];
+      const Vec3T<S> edge = ref->points[i + 1 == ref->count ? 0 : i + 1] - r0;
+      add_line(-side * v.dot(edge), side * u.dot(edge), r0);
+    }
+  } else {
+    // Between the planes through the edge's ends, across the edge.
+    const Vec3T<S> edge = ref->points[1] - ref->points[0];
+    const S ex = u.dot(edge), ey = v.dot(edge);
+    add_line(ex, ey, ref->points[0]);
+    add_line(-ex, -ey, ref->points[1]);
+  }
+  for (int i = 0; i < line_count && count > 0; ++i) {
+    const Line& l = lines[i];
+    count = clip_by_line(
+        buffer[cur], count, [&l](const PlanarPoint<S>& p) { return l.a * p.x + l.b * p.y - l.c; },
+        l.slack, buffer[1 - cur]);
+    cur = 1 - cur;
+  }
+  const S inv_mn = S(1) / mn;
+  for (int i = 0; i < count; ++i) {
+    const PlanarPoint<S>& p = buffer[cur][i];
+    if (!(p.depth >= min_depth)) continue;
+    // Back to 3D: the point of the reference plane above (x, y) along n, and the incident point
+    // `depth` below it.
+    const Vec3T<S> in_plane = p.x * u + p.y * v;
+    const Vec3T<S> on_ref = in_plane + ((w - m.dot(in_plane)) * inv_mn) * n;
+    const Vec3T<S> on_inc = on_ref + (mn > S(0) ? -p.depth : p.depth) * n;
+    out.add(on_ref, on_inc, ref_is_a, p);
+  }
+}
+
+/// clip_features() for two boxes (Box or Rounded<Box>) whose cores overlap along the separating
+/// axis answer's normal `n`, and when their features are two crossing edges (no clipping), the
+/// edges' closest points as the one point.
+template <ConvexShape A, ConvexShape B>
+void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
+                   const Vec3T<typename A::Scalar>& n, typename A::Scalar feature_tolerance,
+                   typename A::Scalar min_depth, typename A::Scalar size,
+                   ClippedPoints<typename A::Scalar>& out) {
+  using S = typename A::Scalar;
+  clip_features(a, b, rel, n, feature_tolerance, min_depth, size, out);
+  const auto& fa = out.feature_a;
+  const auto& fb = out.feature_b;
+  if (out.count == 0 && fa.count == 2 && fb.count == 2) {
+    // Already on the surfaces (pushed by the radii).
+    Vec3T<S> on_a, on_b;
+    closest_points_of_segments(fa.points[0], fa.points[1], fb.points[0], fb.points[1], on_a, on_b);
+    out.on_a[0] = on_a;
+    out.on_b[0] = on_b;
+    out.planar[0] = {S(0), S(0), (on_a - on_b).dot(n)};
+    out.count = 1;
+  }
+}
+
+}  // namespace mink::detail
