@@ -191,7 +191,7 @@ TEST(QueryAnswer, FieldsOfEachWant) {
   const Answer hit = answer_one(overlapping + R"(,"want":"intersect"})");
   EXPECT_EQ(hit.status, "ok");
   EXPECT_EQ(hit.intersect, true);
-  EXPECT_GT(*hit.iterations, 0);
+  EXPECT_EQ(*hit.iterations, 0) << "two boxes: the separating axis test decides, no GJK";
   const Answer hit_distance = answer_one(overlapping + R"(,"want":"distance"})");
   EXPECT_EQ(hit_distance.keys, (Keys{"id", "status", "intersect", "distance", "iterations"}));
   EXPECT_EQ(hit_distance.distance, 0.0);

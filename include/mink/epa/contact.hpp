@@ -14,7 +14,7 @@
 /// difference otherwise: exact for spheres and capsules, no EPA. Only when the cores themselves
 /// meet does EPA (epa.hpp) run on them, and the radii are added to its depth. Two boxes (or
 /// rounded boxes) whose cores overlap skip GJK and EPA: the separating axis test
-/// (manifold/box_box.hpp) gives the same depth and normal exactly, and `iterations` is 0.
+/// (query/box_box.hpp) gives the same depth and normal exactly, and `iterations` is 0.
 ///
 /// Ties: when several normals are equally good the query returns one of them and sets
 /// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric

@@ -8,11 +8,14 @@
 ///
 /// Cost: no allocation, no global state, reentrant. Typically 1-6 support calls per shape; at most
 /// `tolerances.max_iterations`. Pairs of spheres, capsules, points and segments (and their
-/// Rounded versions) take a closed form instead (segment_cores.hpp) and report 0 iterations.
+/// Rounded versions) take a closed form instead (segment_cores.hpp) and report 0 iterations; so do
+/// pairs of boxes (and rounded boxes) that the separating axis test decides
+/// (query/box_box.hpp: always when the cores overlap or are clearly apart).
 #pragma once
 
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
+#include "mink/query/box_box.hpp"
 
 namespace mink {
 
@@ -57,9 +60,23 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.status = result.intersect ? Status::Intersecting : Status::Separated;
     return result;
   }
-  const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const S radius = a.core_radius() + b.core_radius();
   const S size = a.bounding_radius() + b.bounding_radius();
+  if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
+    // Two boxes: the separating axis test decides in a few flops unless its largest gap lies
+    // between 0 and the radii plus the touching tolerance (a corner near a corner: the distance
+    // is then larger than any axis's gap), where GJK decides.
+    const PoseT<S> rel = pose_a.relative(pose_b);
+    const auto verdict = detail::box_box_verdict(
+        detail::BoxCore<A>::half_extents(a), detail::BoxCore<B>::half_extents(b), rel.rotation,
+        rel.translation, radius + tolerances.relative * size);
+    if (verdict != detail::BoxBoxVerdict::Unsure) {
+      result.intersect = verdict == detail::BoxBoxVerdict::Overlapping;
+      result.status = result.intersect ? Status::Intersecting : Status::Separated;
+      return result;
+    }
+  }
+  const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const auto gjk = detail::run_gjk_boolean(diff, radius, size, tolerances, cache);
   result.status = gjk.status;
   result.iterations = gjk.iterations;

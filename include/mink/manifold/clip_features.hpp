@@ -11,23 +11,11 @@
 #include <type_traits>
 
 #include "mink/gjk/segment_cores.hpp"
-#include "mink/manifold/box_box.hpp"
 #include "mink/manifold/clip.hpp"
 #include "mink/manifold/feature.hpp"
+#include "mink/query/box_box.hpp"
 
 namespace mink::detail {
-
-/// Box and Rounded<Box> (the run-time Shape's single box core), for the separating-axis path.
-template <class T>
-struct BoxCore : std::false_type {};
-template <class S>
-struct BoxCore<BoxT<S>> : std::true_type {
-  static const Vec3T<S>& half_extents(const BoxT<S>& b) { return b.half_extents; }
-};
-template <class S>
-struct BoxCore<Rounded<BoxT<S>>> : std::true_type {
-  static const Vec3T<S>& half_extents(const Rounded<BoxT<S>>& b) { return b.shape.half_extents; }
-};
 
 /// The clipped contact points in A's frame, before reduction.
 template <class S>

@@ -15,7 +15,7 @@
 ///
 /// How (the steps of the clipping approach used by Box2D, Bullet and Jolt):
 ///  1. The normal and depth: the contact query (GJK, EPA on the cores), or for two boxes the
-///     separating axis test (box_box.hpp), which gives the same answer for a fixed cost.
+///     separating axis test (query/box_box.hpp), which gives the same answer for a fixed cost.
 ///  2. The support features (feature.hpp) of A along the normal and of B against it: a face, an
 ///     edge or a vertex of each core, pushed out by the core radius (so a capsule is its segment
 ///     moved out by its radius, a sphere one point).

@@ -85,17 +85,17 @@ namespace mink {
 
 /// Hulls with fewer vertices than this scan them (shapes/support_scan.hpp); larger ones climb.
 /// Measured with bench/hull_support_bench.cpp (Release, SSE2, points on a sphere, every point a
-/// vertex; ns per query, CPU time, median of 5, 2-core machine under load, so +-30%): warm = the
-/// direction turns 0.02 rad per query, cold = random directions; support_index (hint, then
-/// table) from 64 vertices, climb_index from the previous answer below (support_index scans there).
+/// vertex; ns per query, CPU time, median of 5, quiet 2-core machine): warm = the direction turns
+/// 0.02 rad per query, cold = random directions; support_index (hint, then table) from 64
+/// vertices, climb_index from the previous answer below (support_index scans there).
 ///
 ///   vertices      16    24    32    48    64    96   128   256  1024  4096
-///   scan         9.7  11.7  14.7  19.3  26.8  42.2  57.5   103   323  1200
-///   climb warm  11.1   8.2   7.3   8.3   7.4   7.4   5.8  14.9   8.4  22.2
-///   climb cold     -     -     -     -  41.8  39.7  41.9  44.3  51.7  61.6
+///   scan         8.9  10.2  12.2  16.2  21.0  33.2  53.5  93.9   301  1113
+///   climb warm  10.3   8.0   7.0   7.7   7.3   7.2   5.5  10.9   8.0  16.8
+///   climb cold     -     -     -     -  45.6  49.3  55.3  64.3  76.1  92.6
 ///
-/// Warm climbing wins from about 24 vertices, cold from about 96; at 64 warm queries are 2-4x
-/// faster than the scan and cold ones at most 1.6x slower. Full table: docs/architecture.md.
+/// Warm climbing wins from about 24 vertices, cold from about 128; at 64 warm queries are 3x
+/// faster than the scan and cold ones at most 2.2x slower. Full table: docs/architecture.md.
 inline constexpr std::size_t kHullClimbMinVertices = 64;
 
 /// The largest plateau (vertices of equal support value) the climb collects to break a tie; a

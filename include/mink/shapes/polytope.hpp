@@ -42,7 +42,7 @@ struct PolytopeHull {
 ///
 /// From scan to hull. Scanning costs nothing to set up, which suits a polytope used in a few
 /// queries; climbing a hull (hull_shape.hpp) is 10 to 100 times faster per query from a few
-/// hundred points up, but building the hull costs about as much as 2,000 to 6,000 scans
+/// hundred points up, but building the hull costs about as much as 1,800 to 3,900 scans
 /// (docs/architecture.md, "Hull shape"). So a polytope of at least kHullClimbMinVertices points
 /// scans for its first kPolytopeHullAfterSupports support queries, then builds its hull once, in
 /// the thread whose query reached the count (others keep scanning meanwhile, none waits), and

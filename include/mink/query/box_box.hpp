@@ -1,16 +1,36 @@
 /// @file box_box.hpp
+/// Two boxes (Box, or Rounded<Box>: the run-time Shape's box core) need no GJK or EPA while the
+/// separating axis test can answer: intersect() asks box_box_verdict(), contact() and manifold()
+/// box_box_axis() when the cores overlap.
+///
 /// Penetration depth and normal of two overlapping boxes by the separating axis test: the 3 + 3
 /// face axes and the 9 edge-edge cross products. For two boxes the least overlap over these
 /// axes is the penetration depth (the Minkowski difference of two boxes is a polytope whose
 /// facet normals are among them), so the answer is EPA's, in a fixed number of flops.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 #include "mink/math/pose.hpp"
 #include "mink/shapes/box.hpp"
+#include "mink/support/rounded.hpp"
 
 namespace mink::detail {
+
+/// Box and Rounded<Box> (the run-time Shape's single box core), for the separating-axis path.
+template <class T>
+struct BoxCore : std::false_type {};
+template <class S>
+struct BoxCore<BoxT<S>> : std::true_type {
+  static const Vec3T<S>& half_extents(const BoxT<S>& b) { return b.half_extents; }
+};
+template <class S>
+struct BoxCore<Rounded<BoxT<S>>> : std::true_type {
+  static const Vec3T<S>& half_extents(const Rounded<BoxT<S>>& b) { return b.shape.half_extents; }
+};
 
 template <class S>
 struct BoxBoxAxis {
@@ -81,6 +101,56 @@ BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S
     result.normal = axis * (sign_nonneg(axis.dot(t)) / length[best - 6]);
   }
   return result;
+}
+
+/// What the separating axis test alone can tell about two boxes: `gap` (unit: length, >= 0) is
+/// how far apart their cores may be and still count as intersecting (the radii plus the touching
+/// tolerance).
+enum class BoxBoxVerdict { Separated, Overlapping, Unsure };
+
+/// Separated as soon as one of the 15 axes separates the boxes by more than `gap` (the distance
+/// is at least that); Overlapping when no axis separates them at all (the separating axis
+/// theorem); Unsure in between, and also when an edge axis is nearly degenerate (edges parallel
+/// to 1e-6 but not exactly), where the theorem's axis cannot be trusted to rounding.
+template <class S>
+BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
+                              const Vec3T<S>& t, S gap) {
+  const Mat3T<S> abs_r = r.cwiseAbs();
+  S worst = -std::numeric_limits<S>::infinity();  // largest separation seen
+  for (int i = 0; i < 3; ++i) {
+    const S g = std::abs(t[i]) - ha[i] - abs_r.row(i).dot(hb);
+    if (g > gap) return BoxBoxVerdict::Separated;
+    worst = std::max(worst, g);
+  }
+  for (int j = 0; j < 3; ++j) {
+    const S g = std::abs(r.col(j).dot(t)) - hb[j] - abs_r.col(j).dot(ha);
+    if (g > gap) return BoxBoxVerdict::Separated;
+    worst = std::max(worst, g);
+  }
+  static constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
+  bool degenerate = false;
+  for (int i = 0; i < 3; ++i) {
+    const int i1 = kNext[i], i2 = kPrev[i];
+    for (int j = 0; j < 3; ++j) {
+      const int j1 = kNext[j], j2 = kPrev[j];
+      // As in box_box_axis(), unnormalised; the square root only when the axis separates.
+      const S ra = ha[i1] * abs_r(i2, j) + ha[i2] * abs_r(i1, j);
+      const S rb = hb[j1] * abs_r(i, j2) + hb[j2] * abs_r(i, j1);
+      const S g = std::abs(t[i2] * r(i1, j) - t[i1] * r(i2, j)) - ra - rb;
+      const S length2 = r(i1, j) * r(i1, j) + r(i2, j) * r(i2, j);
+      if (length2 == S(0)) continue;  // exactly parallel edges: the face axes cover them
+      if (length2 < S(1e-12)) {
+        degenerate = true;
+        continue;
+      }
+      if (g > S(0)) {
+        const S length = std::sqrt(length2);
+        if (g > gap * length) return BoxBoxVerdict::Separated;
+        worst = std::max(worst, g / length);
+      }
+    }
+  }
+  return worst <= S(0) && !degenerate ? BoxBoxVerdict::Overlapping : BoxBoxVerdict::Unsure;
 }
 
 }  // namespace mink::detail
