@@ -14,7 +14,7 @@
 /// difference otherwise: exact for spheres and capsules, no EPA. Only when the cores themselves
 /// meet does EPA (epa.hpp) run on them, and the radii are added to its depth. Two boxes (or
 /// rounded boxes) whose cores overlap skip GJK and EPA: the separating axis test
-/// (query/box_box.hpp) gives the same depth and normal exactly, and `iterations` is 0.
+/// (query/box_box.hpp) gives the same depth and normal to rounding, and `iterations` is 0.
 ///
 /// Ties: when several normals are equally good the query returns one of them and sets
 /// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric
@@ -121,15 +121,17 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // witness points (a point of B's deepest feature that lies over A's face, or the reverse, or
     // the closest points of two crossing edges).
     const PoseT<S> rel = pose_a.relative(pose_b);
+    // No bias towards face axes (the manifold's, for stable normals): the least overlap, exact.
     const auto axis = detail::box_box_axis(detail::BoxCore<A>::half_extents(a),
                                            detail::BoxCore<B>::half_extents(b), rel.rotation,
-                                           rel.translation, S(1e-9) * size);
+                                           rel.translation, S(0));
     if (axis.overlap > touch) {
       // Features only where flat to rounding (1e-9): a rounded face tilted within a coarser
       // tolerance is moved out along its own normal, off the surface by up to r t^2 / 2, and
-      // the witnesses must be exact. The true support point is always among the clipped ones.
+      // the witnesses must be exact; and no slack at the side planes, so the points stay on the
+      // faces. The true support point is always among the clipped ones.
       detail::ClippedPoints<S> clipped;
-      detail::clip_box_pair(a, b, rel, axis.normal, S(1e-9), -touch, size, clipped);
+      detail::clip_box_pair(a, b, rel, axis.normal, S(1e-9), -touch, size, S(0), clipped);
       if (clipped.count > 0) {
         int deepest = 0;
         for (int i = 1; i < clipped.count; ++i)

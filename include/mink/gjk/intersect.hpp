@@ -10,7 +10,8 @@
 /// `tolerances.max_iterations`. Pairs of spheres, capsules, points and segments (and their
 /// Rounded versions) take a closed form instead (segment_cores.hpp) and report 0 iterations; so do
 /// pairs of boxes (and rounded boxes) that the separating axis test decides
-/// (query/box_box.hpp: always when the cores overlap or are clearly apart).
+/// (query/box_box.hpp: when the cores overlap or are clearly apart, and no two edges are parallel
+/// to within 1e-6 without being exactly parallel).
 #pragma once
 
 #include "mink/gjk/gjk.hpp"
@@ -65,7 +66,7 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
     // Two boxes: the separating axis test decides in a few flops unless its largest gap lies
     // between 0 and the radii plus the touching tolerance (a corner near a corner: the distance
-    // is then larger than any axis's gap), where GJK decides.
+    // is then larger than any axis's gap) or an edge axis is nearly degenerate; GJK decides then.
     const PoseT<S> rel = pose_a.relative(pose_b);
     const auto verdict = detail::box_box_verdict(
         detail::BoxCore<A>::half_extents(a), detail::BoxCore<B>::half_extents(b), rel.rotation,

@@ -15,8 +15,10 @@ namespace mink::detail {
 /// Most points a clipped polygon can have: an incident polygon of 16 points cut by 16 side planes.
 inline constexpr int kMaxClipPoints = 40;
 
-/// A clipped point seen along the contact normal: its coordinates across the normal (unit: length)
-/// and its depth below the reference feature along the normal (> 0 penetrating).
+/// A clipped point seen along the contact normal: its coordinates in a plane it is projected onto
+/// along the normal (across the normal, or a box's reference face, where lengths stretch by at
+/// most 1 / |face normal . normal|; unit: length) and its depth below the reference feature along
+/// the normal (> 0 penetrating).
 template <class S>
 struct PlanarPoint {
   S x, y, depth;

@@ -17,6 +17,13 @@
 
 namespace mink::detail {
 
+/// Manifolds count points up to this fraction of the size outside a side plane as inside: an
+/// incident edge that lies along a side plane (equal boxes stacked flush) and is turned by
+/// rounding or a 1e-9 rotation would otherwise be cut at an arbitrary point along its length, and
+/// the manifold would flicker between corners and such points. (contact() clips with none: its
+/// witness points must lie on the surfaces.)
+inline constexpr double kSideSlack = 1e-8;
+
 /// The clipped contact points in A's frame, before reduction.
 template <class S>
 struct ClippedPoints {
@@ -103,11 +110,12 @@ void clip_by_box_face(const Vec3T<S>& h, const PoseT<S>* to_a, const Vec3T<S>& f
 }
 
 /// Steps 2 and 3 of manifold.hpp's outline, in A's frame: `rel` is B's pose in A's frame, `n` the
-/// unit normal in A's frame, `min_depth` the least depth kept (negative: a gap).
+/// unit normal in A's frame, `min_depth` the least depth kept (negative: a gap), `slack` how far
+/// outside a side plane a point still counts as inside (unit: length; see kSideSlack).
 template <ConvexShape A, ConvexShape B>
 void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
                    const Vec3T<typename A::Scalar>& n, typename A::Scalar feature_tolerance,
-                   typename A::Scalar min_depth, typename A::Scalar size,
+                   typename A::Scalar min_depth, typename A::Scalar size, typename A::Scalar slack,
                    ClippedPoints<typename A::Scalar>& out) {
   using S = typename A::Scalar;
   auto& fa = out.feature_a;
@@ -164,11 +172,6 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
   }
   const S mn = m.dot(n);
   if (!(std::abs(mn) > S(0.5))) return;  // a face this oblique is not a contact face
-  // Points up to 1e-8 of the size outside a side plane count as inside: an incident edge that
-  // lies along a side plane (equal boxes stacked flush) and is turned by rounding or a 1e-9
-  // rotation would otherwise be cut at an arbitrary point along its length, and the manifold
-  // would flicker between corners and such points.
-  const S slack = S(1e-8) * size;
   if (ref->count >= 3) {
     if constexpr (BoxCore<A>::value) {
       const PoseT<S>* a_frame = nullptr;  // A's frame is the frame of the results
@@ -253,10 +256,10 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
 template <ConvexShape A, ConvexShape B>
 void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
                    const Vec3T<typename A::Scalar>& n, typename A::Scalar feature_tolerance,
-                   typename A::Scalar min_depth, typename A::Scalar size,
+                   typename A::Scalar min_depth, typename A::Scalar size, typename A::Scalar slack,
                    ClippedPoints<typename A::Scalar>& out) {
   using S = typename A::Scalar;
-  clip_features(a, b, rel, n, feature_tolerance, min_depth, size, out);
+  clip_features(a, b, rel, n, feature_tolerance, min_depth, size, slack, out);
   const auto& fa = out.feature_a;
   const auto& fb = out.feature_b;
   if (out.count == 0 && fa.count == 2 && fb.count == 2) {

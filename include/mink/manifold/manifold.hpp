@@ -138,7 +138,7 @@ ManifoldResultT<typename A::Scalar> manifold_from_contact(
   const Vec3T<S> n = pose_a.inverse_rotate(c.normal);
   ClippedPoints<S> clipped;
   clip_features(a, b, pose_a.relative(pose_b), n, options.feature_tolerance, min_depth, size,
-                clipped);
+                S(kSideSlack) * size, clipped);
   if (clipped.count > 0) {
     keep_four(clipped, pose_a, size, result);
   } else {
@@ -178,7 +178,7 @@ manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       const S min_depth = -std::max(options.margin, options.tolerances.relative * size);
       detail::ClippedPoints<S> clipped;
       detail::clip_box_pair(a, b, rel, axis.normal, options.feature_tolerance, min_depth, size,
-                            clipped);
+                            S(detail::kSideSlack) * size, clipped);
       if (clipped.count > 0) {
         result.status = Status::Intersecting;
         result.intersect = true;

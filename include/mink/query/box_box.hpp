@@ -32,6 +32,17 @@ struct BoxCore<Rounded<BoxT<S>>> : std::true_type {
   static const Vec3T<S>& half_extents(const Rounded<BoxT<S>>& b) { return b.shape.half_extents; }
 };
 
+/// B's radius along the edge axis e_i x r.col(j) (unnormalised; i1, i2 the other two indices in
+/// cyclic order): the sum over B's axes k of hb[k] |r.col(k) . axis|, from r as given. (For an
+/// exact rotation two of the terms are |r(i, .)| entries, but that identity is off by r's
+/// rounding divided by the axis length, which near-parallel edges make large.)
+template <class S>
+S edge_axis_radius_b(const Vec3T<S>& hb, const Mat3T<S>& r, int i1, int i2, int j) {
+  S sum = S(0);
+  for (int k = 0; k < 3; ++k) sum += hb[k] * std::abs(r(i2, k) * r(i1, j) - r(i1, k) * r(i2, j));
+  return sum;
+}
+
 template <class S>
 struct BoxBoxAxis {
   S overlap;        ///< least overlap (unit: length); negative when an axis separates the boxes
@@ -69,12 +80,10 @@ BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S
   for (int i = 0; i < 3; ++i) {
     const int i1 = kNext[i], i2 = kPrev[i];
     for (int j = 0; j < 3; ++j) {
-      const int j1 = kNext[j], j2 = kPrev[j];
       length[3 * i + j] = std::sqrt(r(i1, j) * r(i1, j) + r(i2, j) * r(i2, j));
-      // Radii of A and B projected on the axis (unnormalised): for a rotation,
-      // r^T (e_i x r.col(j)) has the entries r(i, j2) and -r(i, j1) at j1 and j2.
+      // Radii of A and B projected on the axis (unnormalised).
       const S ra = ha[i1] * abs_r(i2, j) + ha[i2] * abs_r(i1, j);
-      const S rb = hb[j1] * abs_r(i, j2) + hb[j2] * abs_r(i, j1);
+      const S rb = edge_axis_radius_b(hb, r, i1, i2, j);
       const S ta = t[i2] * r(i1, j) - t[i1] * r(i2, j);
       overlap[6 + 3 * i + j] = ra + rb - std::abs(ta);
     }
@@ -109,9 +118,10 @@ BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S
 enum class BoxBoxVerdict { Separated, Overlapping, Unsure };
 
 /// Separated as soon as one of the 15 axes separates the boxes by more than `gap` (the distance
-/// is at least that); Overlapping when no axis separates them at all (the separating axis
-/// theorem); Unsure in between, and also when an edge axis is nearly degenerate (edges parallel
-/// to 1e-6 but not exactly), where the theorem's axis cannot be trusted to rounding.
+/// is at least that, to rounding, for the rotation r as given); Overlapping when no axis separates
+/// them at all (the separating axis theorem); Unsure in between, and also when an edge axis is
+/// nearly degenerate (edges parallel to 1e-6 but not exactly), where the theorem's axis cannot be
+/// trusted to rounding.
 template <class S>
 BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
                               const Vec3T<S>& t, S gap) {
@@ -132,10 +142,9 @@ BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3
   for (int i = 0; i < 3; ++i) {
     const int i1 = kNext[i], i2 = kPrev[i];
     for (int j = 0; j < 3; ++j) {
-      const int j1 = kNext[j], j2 = kPrev[j];
       // As in box_box_axis(), unnormalised; the square root only when the axis separates.
       const S ra = ha[i1] * abs_r(i2, j) + ha[i2] * abs_r(i1, j);
-      const S rb = hb[j1] * abs_r(i, j2) + hb[j2] * abs_r(i, j1);
+      const S rb = edge_axis_radius_b(hb, r, i1, i2, j);
       const S g = std::abs(t[i2] * r(i1, j) - t[i1] * r(i2, j)) - ra - rb;
       const S length2 = r(i1, j) * r(i1, j) + r(i2, j) * r(i2, j);
       if (length2 == S(0)) continue;  // exactly parallel edges: the face axes cover them
