@@ -56,8 +56,7 @@ void clip_by_box_face(const Vec3T<S>& h, const PoseT<S>* to_a, const Vec3T<S>& f
   auto local_dir = [&](const Vec3T<S>& d) { return to_a ? to_a->inverse_rotate(d) : d; };
   auto local_point = [&](const Vec3T<S>& p) { return to_a ? to_a->inverse_apply(p) : p; };
   const Vec3T<S> m = local_dir(face_normal);  // +-e_k up to rounding
-  const Vec3T<S> am = m.cwiseAbs();
-  const int k = am.x() >= am.y() && am.x() >= am.z() ? 0 : (am.y() >= am.z() ? 1 : 2);
+  const int k = dominant_axis(m);
   const int iu = (k + 1) % 3, iv = (k + 2) % 3;
   const S side = m[k] > S(0) ? S(1) : S(-1);
   const S w = side * local_point(ref_point)[k];  // the face's plane: side * p[k] = w

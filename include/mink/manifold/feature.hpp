@@ -189,10 +189,7 @@ void support_feature(const BoxT<S>& box, const Vec3T<S>& d, S tolerance, Support
   // A face: the fixed axis k, or for a box small against the tolerance (all free) its face most
   // aligned with d. Corners counter-clockwise about the outward normal.
   int k = !fx ? 0 : (!fy ? 1 : 2);
-  if (n_free == 3) {
-    const Vec3T<S> a = d.cwiseAbs();
-    k = a.x() >= a.y() && a.x() >= a.z() ? 0 : (a.y() >= a.z() ? 1 : 2);
-  }
+  if (n_free == 3) k = detail::dominant_axis(d);
   const S side = detail::sign_nonneg(d[k]);
   const Vec3T<S> c = Vec3T<S>::Unit(k) * (side * h[k]);
   const Vec3T<S> e1 = Vec3T<S>::Unit((k + 1) % 3) * h[(k + 1) % 3];

@@ -32,15 +32,69 @@ struct BoxCore<Rounded<BoxT<S>>> : std::true_type {
   static const Vec3T<S>& half_extents(const Rounded<BoxT<S>>& b) { return b.shape.half_extents; }
 };
 
-/// B's radius along the edge axis e_i x r.col(j) (unnormalised; i1, i2 the other two indices in
-/// cyclic order): the sum over B's axes k of hb[k] |r.col(k) . axis|, from r as given. (For an
-/// exact rotation two of the terms are |r(i, .)| entries, but that identity is off by r's
-/// rounding divided by the axis length, which near-parallel edges make large.)
+/// The 15 separating axes of box A (half extents ha) and box B (half extents hb) whose pose in
+/// A's frame is (r, t): on each axis, the sum of the two radii minus the distance between the
+/// centres (> 0 overlapping, < 0 a gap). Face axes are unit; edge axes e_i x r.col(j) (index
+/// 3 i + j) are not: their terms carry the factor |e_i x r.col(j)|, whose square is
+/// `edge_length_sq`, so that no square root is needed to compare or test them.
 template <class S>
-S edge_axis_radius_b(const Vec3T<S>& hb, const Mat3T<S>& r, int i1, int i2, int j) {
-  S sum = S(0);
-  for (int k = 0; k < 3; ++k) sum += hb[k] * std::abs(r(i2, k) * r(i1, j) - r(i1, k) * r(i2, j));
-  return sum;
+struct BoxPairAxes {
+  S face_overlap[6];    ///< A's x, y, z, then B's x, y, z (unit: length)
+  S edge_overlap[9];    ///< times the axis length (unit: length)
+  S edge_length_sq[9];  ///< sin^2 of the angle between the edges
+  S offset_along_b[3];  ///< B's centre along B's own axes, (r^T t)
+};
+
+/// Overlap along A's face axis i, and along B's face axis j given B's centre along it.
+template <class S>
+[[gnu::always_inline]] inline S box_face_overlap_a(int i, const Vec3T<S>& ha, const Vec3T<S>& hb,
+                                                   const Mat3T<S>& abs_r, const Vec3T<S>& t) {
+  return ha[i] + abs_r(i, 0) * hb[0] + abs_r(i, 1) * hb[1] + abs_r(i, 2) * hb[2] - std::abs(t[i]);
+}
+template <class S>
+[[gnu::always_inline]] inline S box_face_overlap_b(int j, const Vec3T<S>& ha, const Vec3T<S>& hb,
+                                                   const Mat3T<S>& abs_r, S offset_along_b) {
+  return hb[j] + abs_r(0, j) * ha[0] + abs_r(1, j) * ha[1] + abs_r(2, j) * ha[2] -
+         std::abs(offset_along_b);
+}
+
+/// Fills the face terms of `out` (the 6 face axes and offset_along_b).
+template <class S>
+[[gnu::always_inline]] inline void box_face_axes(const Vec3T<S>& ha, const Vec3T<S>& hb,
+                                                 const Mat3T<S>& abs_r, const Mat3T<S>& r,
+                                                 const Vec3T<S>& t, BoxPairAxes<S>& out) {
+  for (int i = 0; i < 3; ++i) out.face_overlap[i] = box_face_overlap_a(i, ha, hb, abs_r, t);
+  for (int j = 0; j < 3; ++j) {
+    out.offset_along_b[j] = r.col(j).dot(t);
+    out.face_overlap[3 + j] = box_face_overlap_b(j, ha, hb, abs_r, out.offset_along_b[j]);
+  }
+}
+
+/// Fills the edge terms of `out` (the 9 edge axes), apart from the face terms: most separated
+/// pairs are told apart by a face axis, and then these are not needed.
+template <class S>
+[[gnu::always_inline]] inline void box_edge_axes(const Vec3T<S>& ha, const Vec3T<S>& hb,
+                                                 const Mat3T<S>& abs_r, const Mat3T<S>& r,
+                                                 const Vec3T<S>& t, BoxPairAxes<S>& out) {
+  static constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
+  for (int i = 0; i < 3; ++i) {
+    const int i1 = kNext[i], i2 = kPrev[i];
+    // B's radius on e_i x r.col(j) is the sum over B's axes k of hb[k] |r.col(k) . axis|, the 2x2
+    // minors of rows i1, i2 of r. They are computed from r as given: for an exact rotation they
+    // equal entries of r, but that identity is off by r's rounding divided by the axis length,
+    // which nearly parallel edges make large. The minor of (j, j) is 0 and (k, j) is -(j, k).
+    const S m01 = std::abs(r(i1, 0) * r(i2, 1) - r(i2, 0) * r(i1, 1));
+    const S m02 = std::abs(r(i1, 0) * r(i2, 2) - r(i2, 0) * r(i1, 2));
+    const S m12 = std::abs(r(i1, 1) * r(i2, 2) - r(i2, 1) * r(i1, 2));
+    const S rb[3] = {hb[1] * m01 + hb[2] * m02, hb[0] * m01 + hb[2] * m12,
+                     hb[0] * m02 + hb[1] * m12};
+    for (int j = 0; j < 3; ++j) {
+      const S ra = ha[i1] * abs_r(i2, j) + ha[i2] * abs_r(i1, j);
+      const S offset = t[i2] * r(i1, j) - t[i1] * r(i2, j);
+      out.edge_overlap[3 * i + j] = ra + rb[j] - std::abs(offset);
+      out.edge_length_sq[3 * i + j] = r(i1, j) * r(i1, j) + r(i2, j) * r(i2, j);
+    }
+  }
 }
 
 template <class S>
@@ -59,55 +113,45 @@ template <class S>
 BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
                            const Vec3T<S>& t, S edge_bias) {
   const Mat3T<S> abs_r = r.cwiseAbs();
-  // B's offset along its own axes.
-  const Vec3T<S> tb = r.transpose() * t;
-  // Overlaps along the 6 face axes, then the least (the first on ties). Indices only in the
-  // loops: the normal is built once at the end.
-  S overlap[15];
-  for (int i = 0; i < 3; ++i)
-    overlap[i] =
-        ha[i] + abs_r(i, 0) * hb[0] + abs_r(i, 1) * hb[1] + abs_r(i, 2) * hb[2] - std::abs(t[i]);
-  for (int j = 0; j < 3; ++j)
-    overlap[3 + j] =
-        hb[j] + abs_r(0, j) * ha[0] + abs_r(1, j) * ha[1] + abs_r(2, j) * ha[2] - std::abs(tb[j]);
+  BoxPairAxes<S> axes;
+  box_face_axes(ha, hb, abs_r, r, t, axes);
+  box_edge_axes(ha, hb, abs_r, r, t, axes);
+  // The least face overlap (the first on ties).
   int best = 0;
   for (int k = 1; k < 6; ++k)
-    if (overlap[k] < overlap[best]) best = k;
-  // The 9 edge-edge axes e_i x r.col(j), of length sin(angle between the edges) =
-  // sqrt(r(i1, j)^2 + r(i2, j)^2); overlaps per unit length.
-  static constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
-  S length[9];
-  for (int i = 0; i < 3; ++i) {
-    const int i1 = kNext[i], i2 = kPrev[i];
-    for (int j = 0; j < 3; ++j) {
-      length[3 * i + j] = std::sqrt(r(i1, j) * r(i1, j) + r(i2, j) * r(i2, j));
-      // Radii of A and B projected on the axis (unnormalised).
-      const S ra = ha[i1] * abs_r(i2, j) + ha[i2] * abs_r(i1, j);
-      const S rb = edge_axis_radius_b(hb, r, i1, i2, j);
-      const S ta = t[i2] * r(i1, j) - t[i1] * r(i2, j);
-      overlap[6 + 3 * i + j] = ra + rb - std::abs(ta);
+    if (axes.face_overlap[k] < axes.face_overlap[best]) best = k;
+  S least = axes.face_overlap[best];
+  // An edge axis k wins when overlap_k / length_k < min(least, face), compared as x |x|, which
+  // keeps the order, times length_k^2: a product instead of a square root and a division per
+  // axis. `key` is the winner's overlap in that form.
+  auto signed_square = [](S x) { return x * std::abs(x); };
+  const S face_key = signed_square(least - edge_bias);
+  S key = signed_square(least);
+  for (int k = 0; k < 9; ++k) {
+    const S length_sq = axes.edge_length_sq[k];
+    if (!(length_sq > S(1e-12))) continue;
+    const S o = signed_square(axes.edge_overlap[k]);
+    if (o < std::min(key, face_key) * length_sq) {
+      best = 6 + k;
+      key = o / length_sq;
     }
   }
-  const S face = overlap[best] - edge_bias;
-  for (int k = 0; k < 9; ++k) {
-    if (!(length[k] > S(1e-6))) continue;
-    const S o = overlap[6 + k] / length[k];
-    overlap[6 + k] = o;
-    if (o < face && o < overlap[best]) best = 6 + k;
-  }
 
-  BoxBoxAxis<S> result{overlap[best], Vec3T<S>::Zero(), best};
+  BoxBoxAxis<S> result{least, Vec3T<S>::Zero(), best};
   if (best < 3) {
     result.normal[best] = sign_nonneg(t[best]);
   } else if (best < 6) {
-    result.normal = r.col(best - 3) * sign_nonneg(tb[best - 3]);
+    result.normal = r.col(best - 3) * sign_nonneg(axes.offset_along_b[best - 3]);
   } else {
+    static constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
     const int i = (best - 6) / 3, j = (best - 6) % 3;
+    const S length = std::sqrt(axes.edge_length_sq[best - 6]);
+    result.overlap = axes.edge_overlap[best - 6] / length;
     Vec3T<S> axis;
     axis[i] = S(0);
     axis[kNext[i]] = -r(kPrev[i], j);
     axis[kPrev[i]] = r(kNext[i], j);
-    result.normal = axis * (sign_nonneg(axis.dot(t)) / length[best - 6]);
+    result.normal = axis * (sign_nonneg(axis.dot(t)) / length);
   }
   return result;
 }
@@ -126,40 +170,33 @@ template <class S>
 BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
                               const Vec3T<S>& t, S gap) {
   const Mat3T<S> abs_r = r.cwiseAbs();
-  S worst = -std::numeric_limits<S>::infinity();  // largest separation seen
+  // Face axes one at a time: most separated pairs are told apart by the first ones.
+  bool apart = false;  // some axis shows a gap > 0 (but not > `gap`)
   for (int i = 0; i < 3; ++i) {
-    const S g = std::abs(t[i]) - ha[i] - abs_r.row(i).dot(hb);
+    const S g = -box_face_overlap_a(i, ha, hb, abs_r, t);
     if (g > gap) return BoxBoxVerdict::Separated;
-    worst = std::max(worst, g);
+    apart |= g > S(0);
   }
   for (int j = 0; j < 3; ++j) {
-    const S g = std::abs(r.col(j).dot(t)) - hb[j] - abs_r.col(j).dot(ha);
+    const S g = -box_face_overlap_b(j, ha, hb, abs_r, S(r.col(j).dot(t)));
     if (g > gap) return BoxBoxVerdict::Separated;
-    worst = std::max(worst, g);
+    apart |= g > S(0);
   }
-  static constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
+  BoxPairAxes<S> axes;
+  box_edge_axes(ha, hb, abs_r, r, t, axes);
   bool degenerate = false;
-  for (int i = 0; i < 3; ++i) {
-    const int i1 = kNext[i], i2 = kPrev[i];
-    for (int j = 0; j < 3; ++j) {
-      // As in box_box_axis(), unnormalised; the square root only when the axis separates.
-      const S ra = ha[i1] * abs_r(i2, j) + ha[i2] * abs_r(i1, j);
-      const S rb = edge_axis_radius_b(hb, r, i1, i2, j);
-      const S g = std::abs(t[i2] * r(i1, j) - t[i1] * r(i2, j)) - ra - rb;
-      const S length2 = r(i1, j) * r(i1, j) + r(i2, j) * r(i2, j);
-      if (length2 == S(0)) continue;  // exactly parallel edges: the face axes cover them
-      if (length2 < S(1e-12)) {
-        degenerate = true;
-        continue;
-      }
-      if (g > S(0)) {
-        const S length = std::sqrt(length2);
-        if (g > gap * length) return BoxBoxVerdict::Separated;
-        worst = std::max(worst, g / length);
-      }
+  for (int k = 0; k < 9; ++k) {
+    const S g = -axes.edge_overlap[k], length_sq = axes.edge_length_sq[k];
+    if (length_sq == S(0)) continue;  // exactly parallel edges: the face axes cover them
+    if (length_sq < S(1e-12)) {
+      degenerate = true;
+      continue;
     }
+    // g / length > gap, squared (both sides positive).
+    if (g > S(0) && g * g > gap * gap * length_sq) return BoxBoxVerdict::Separated;
+    apart |= g > S(0);
   }
-  return worst <= S(0) && !degenerate ? BoxBoxVerdict::Overlapping : BoxBoxVerdict::Unsure;
+  return !apart && !degenerate ? BoxBoxVerdict::Overlapping : BoxBoxVerdict::Unsure;
 }
 
 }  // namespace mink::detail

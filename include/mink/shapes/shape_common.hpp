@@ -27,6 +27,13 @@ inline S sign_nonneg(S x) {
   return x >= S(0) ? S(1) : S(-1);
 }
 
+/// Index of the largest |v[i]| (the first on ties): the axis of the box face most aligned with v.
+template <class S>
+inline int dominant_axis(const Vec3T<S>& v) {
+  const Vec3T<S> a = v.cwiseAbs();
+  return a.x() >= a.y() && a.x() >= a.z() ? 0 : (a.y() >= a.z() ? 1 : 2);
+}
+
 /// True for a finite, non-negative length.
 template <class S>
 inline bool is_length(S x) {
