@@ -103,6 +103,22 @@ inline std::size_t support_index<double>(const double* xs, const double* ys, con
   // block with the same instructions, so the equality test compares bit-identical values.
   constexpr int kVectors = 4;
   constexpr std::size_t kBlock = kVectors * kLaneWidth;
+  constexpr std::size_t kFew = 8;
+  if (n <= kFew) {
+    // Few points: the dot products, their maximum by a tree (no chain of dependent compares) and
+    // the first index that reaches it, all without branches on the data. Unused slots are -inf
+    // and never win; a NaN maximum (NaN direction) matches nothing and gives 0.
+    double dots[kFew];
+    for (std::size_t i = 0; i < kFew; ++i)
+      dots[i] =
+          i < n ? xs[i] * dx + ys[i] * dy + zs[i] * dz : -std::numeric_limits<double>::infinity();
+    auto larger = [](double a, double b) { return b > a ? b : a; };
+    const double best = larger(larger(larger(dots[0], dots[1]), larger(dots[2], dots[3])),
+                               larger(larger(dots[4], dots[5]), larger(dots[6], dots[7])));
+    std::size_t best_i = 0;
+    for (std::size_t i = kFew; i-- > 0;) best_i = dots[i] == best && i < n ? i : best_i;
+    return best_i;
+  }
   if (n < kBlock) return support_index_scalar(xs, ys, zs, n, dx, dy, dz);
   const LaneVec vx = lane_set1(dx), vy = lane_set1(dy), vz = lane_set1(dz);
   auto block_dots = [&](std::size_t i, LaneVec* dots) {

@@ -55,6 +55,22 @@ TEST(SupportScan, TiesGoToTheLowestIndex) {
   EXPECT_EQ(s.index(Vec3(0, 0, 1)), 0u);  // every point ties: index 0
 }
 
+TEST(SupportScan, FewPointsTiesGoToTheLowestIndex) {
+  // Up to 8 points take their own path (a tree maximum, then the first index that reaches it):
+  // the first 1 to 8 corners of a cube against the scalar twin, in directions with ties.
+  for (std::size_t n = 1; n <= 8; ++n) {
+    Soa s;
+    for (std::size_t i = 0; i < n; ++i) {
+      s.x.push_back(i & 1 ? 1.0 : -1.0);
+      s.y.push_back(i & 2 ? 1.0 : -1.0);
+      s.z.push_back(i & 4 ? 1.0 : -1.0);
+    }
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(-1, 0, 0),
+                          Vec3(1, 1, 0), Vec3(0, -1, 1), Vec3(0, 0, 0), Vec3(1, 1, 1)})
+      EXPECT_EQ(s.index(d), s.scalar(d)) << n << " points, direction " << d.transpose();
+  }
+}
+
 TEST(SupportScan, NanDirectionGivesAValidIndex) {
   Soa s;
   for (int i = 0; i < 20; ++i) {
