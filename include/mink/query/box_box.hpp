@@ -32,6 +32,9 @@ struct BoxCore<Rounded<BoxT<S>>> : std::true_type {
   static const Vec3T<S>& half_extents(const Rounded<BoxT<S>>& b) { return b.shape.half_extents; }
 };
 
+/// The next and the previous axis in cyclic order: e_i x e_(i+1) = e_(i+2).
+inline constexpr int kNextAxis[3] = {1, 2, 0}, kPrevAxis[3] = {2, 0, 1};
+
 /// The 15 separating axes of box A (half extents ha) and box B (half extents hb) whose pose in
 /// A's frame is (r, t): on each axis, the sum of the two radii minus the distance between the
 /// centres (> 0 overlapping, < 0 a gap). Face axes are unit; edge axes e_i x r.col(j) (index
@@ -76,9 +79,8 @@ template <class S>
 [[gnu::always_inline]] inline void box_edge_axes(const Vec3T<S>& ha, const Vec3T<S>& hb,
                                                  const Mat3T<S>& abs_r, const Mat3T<S>& r,
                                                  const Vec3T<S>& t, BoxPairAxes<S>& out) {
-  static constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
   for (int i = 0; i < 3; ++i) {
-    const int i1 = kNext[i], i2 = kPrev[i];
+    const int i1 = kNextAxis[i], i2 = kPrevAxis[i];
     // B's radius on e_i x r.col(j) is the sum over B's axes k of hb[k] |r.col(k) . axis|, the 2x2
     // minors of rows i1, i2 of r. They are computed from r as given: for an exact rotation they
     // equal entries of r, but that identity is off by r's rounding divided by the axis length,
@@ -143,14 +145,13 @@ BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S
   } else if (best < 6) {
     result.normal = r.col(best - 3) * sign_nonneg(axes.offset_along_b[best - 3]);
   } else {
-    static constexpr int kNext[3] = {1, 2, 0}, kPrev[3] = {2, 0, 1};
     const int i = (best - 6) / 3, j = (best - 6) % 3;
     const S length = std::sqrt(axes.edge_length_sq[best - 6]);
     result.overlap = axes.edge_overlap[best - 6] / length;
     Vec3T<S> axis;
     axis[i] = S(0);
-    axis[kNext[i]] = -r(kPrev[i], j);
-    axis[kPrev[i]] = r(kNext[i], j);
+    axis[kNextAxis[i]] = -r(kPrevAxis[i], j);
+    axis[kPrevAxis[i]] = r(kNextAxis[i], j);
     result.normal = axis * (sign_nonneg(axis.dot(t)) / length);
   }
   return result;

@@ -97,10 +97,6 @@ inline void lane_store(double* p, LaneVec v) {
 template <>
 inline std::size_t support_index<double>(const double* xs, const double* ys, const double* zs,
                                          std::size_t n, double dx, double dy, double dz) {
-  // Blocks of kBlock points: the dot products and the block's maximum are pure SIMD with no
-  // loop-carried dependency; only a block that beats the best so far (about log n of them for a
-  // random direction) costs a branch. The winner's index is found at the end by recomputing its
-  // block with the same instructions, so the equality test compares bit-identical values.
   constexpr int kVectors = 4;
   constexpr std::size_t kBlock = kVectors * kLaneWidth;
   constexpr std::size_t kFew = 8;
@@ -120,6 +116,10 @@ inline std::size_t support_index<double>(const double* xs, const double* ys, con
     return best_i;
   }
   if (n < kBlock) return support_index_scalar(xs, ys, zs, n, dx, dy, dz);
+  // Blocks of kBlock points: the dot products and the block's maximum are pure SIMD with no
+  // loop-carried dependency; only a block that beats the best so far (about log n of them for a
+  // random direction) costs a branch. The winner's index is found at the end by recomputing its
+  // block with the same instructions, so the equality test compares bit-identical values.
   const LaneVec vx = lane_set1(dx), vy = lane_set1(dy), vz = lane_set1(dz);
   auto block_dots = [&](std::size_t i, LaneVec* dots) {
     for (int c = 0; c < kVectors; ++c) {
