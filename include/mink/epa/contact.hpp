@@ -32,7 +32,7 @@
 #include "mink/epa/epa.hpp"
 #include "mink/gjk/distance.hpp"
 #include "mink/gjk/segment_cores.hpp"
-#include "mink/manifold/clip_features.hpp"
+#include "mink/manifold/clip_box_pair.hpp"
 
 namespace mink {
 

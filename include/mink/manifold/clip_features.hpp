@@ -1,8 +1,7 @@
 /// @file clip_features.hpp
 /// Steps 2 and 3 of a contact manifold (manifold.hpp): the support features of both shapes along
 /// the normal, the reference and incident feature, and the incident feature clipped against the
-/// reference's side planes, each point with its own depth. Also the box-box case that contact()
-/// uses for its deepest points.
+/// reference's side planes, each point with its own depth. (Two boxes: clip_box_pair.hpp.)
 #pragma once
 
 #include <algorithm>
@@ -10,7 +9,6 @@
 #include <limits>
 #include <type_traits>
 
-#include "mink/gjk/segment_cores.hpp"
 #include "mink/manifold/clip.hpp"
 #include "mink/manifold/feature.hpp"
 #include "mink/query/box_box.hpp"
@@ -31,9 +29,6 @@ struct ClippedPoints {
   Vec3T<S> on_a[kMaxClipPoints];
   Vec3T<S> on_b[kMaxClipPoints];
   PlanarPoint<S> planar[kMaxClipPoints];  ///< seen along the normal, with the depths
-  /// The features were two crossing edges (or an edge and a vertex, or two vertices): no
-  /// clipping, `count` is 0 and the caller gives one point.
-  SupportFeatureT<S> feature_a, feature_b;
 
   /// Appends a point from its position on the reference feature and on the incident one.
   void add(const Vec3T<S>& on_ref, const Vec3T<S>& on_inc, bool ref_is_a, const PlanarPoint<S>& p) {
@@ -44,54 +39,53 @@ struct ClippedPoints {
   }
 };
 
-/// The clipping of clip_features() when the reference face is a face of a box with half extents
-/// h: in the box's frame, where the face's side planes are axis aligned. `to_a` takes the box's
-/// frame to A's (nullptr: it is A's); `ref_point` is a corner of the reference face (pushed out by
-/// the radius), `incident` the incident feature, `n` the normal, all in A's frame.
+/// The clipping of a manifold whose reference face is a face of a box with half extents h, done
+/// in the box's frame, where the face's side planes are axis aligned. The face has the outward
+/// normal side * e_k and the plane side * p[k] = w (h[k] plus the radius). `incident` holds the
+/// `count` points of the incident feature and `n` is the unit normal out of the face
+/// (side * n[k] > 0.5), both in the box's frame. `to_a` takes the box's frame to A's, the frame
+/// of the results (nullptr: it is A's).
 template <class S>
-void clip_by_box_face(const Vec3T<S>& h, const PoseT<S>* to_a, const Vec3T<S>& face_normal,
-                      const Vec3T<S>& ref_point, const SupportFeatureT<S>& incident,
-                      const Vec3T<S>& n, bool ref_is_a, S min_depth, S slack,
+void clip_by_box_face(const Vec3T<S>& h, int k, S side, S w, const Vec3T<S>* incident, int count,
+                      const Vec3T<S>& n, bool ref_is_a, S min_depth, S slack, const PoseT<S>* to_a,
                       ClippedPoints<S>& out) {
-  auto local_dir = [&](const Vec3T<S>& d) { return to_a ? to_a->inverse_rotate(d) : d; };
-  auto local_point = [&](const Vec3T<S>& p) { return to_a ? to_a->inverse_apply(p) : p; };
-  const Vec3T<S> m = local_dir(face_normal);  // +-e_k up to rounding
-  const int k = dominant_axis(m);
-  const int iu = (k + 1) % 3, iv = (k + 2) % 3;
-  const S side = m[k] > S(0) ? S(1) : S(-1);
-  const S w = side * local_point(ref_point)[k];  // the face's plane: side * p[k] = w
-  // Points move along `axis` (the normal, turned to point through the face) onto the plane.
-  const Vec3T<S> nl = local_dir(n);
-  const Vec3T<S> axis = side * nl[k] > S(0) ? nl : Vec3T<S>(-nl);
-  const S inv = S(1) / std::abs(nl[k]);
+  const int iu = kNextAxis[k], iv = kPrevAxis[k];
+  // Points move along n onto the plane.
+  const S inv = S(1) / std::abs(n[k]);
   PlanarPoint<S> buffer[2][kMaxClipPoints];
-  int count = incident.count;
   for (int i = 0; i < count; ++i) {
-    const Vec3T<S> p = local_point(incident.points[i]);
+    const Vec3T<S>& p = incident[i];
     const S t = (w - side * p[k]) * inv;
-    buffer[0][i] = {p[iu] + t * axis[iu], side * (p[iv] + t * axis[iv]), t};
+    buffer[0][i] = {p[iu] + t * n[iu], side * (p[iv] + t * n[iv]), t};
   }
   // The side lines in the order of the face's edges (counter-clockwise about its normal, which
   // the factor `side` on y keeps for both faces of the axis): y <= h_v, x >= -h_u, y >= -h_v,
   // x <= h_u.
+  // Only against the sides that some point is outside of: clipping makes new points between old
+  // ones, never farther out, and a feature inside the face (a small box on a large one) needs no
+  // clipping at all.
   const S hu = h[iu], hv = h[iv];
-  // A feature inside the face (a small box on a large one) needs no clipping.
-  bool inside = true;
-  for (int i = 0; i < count; ++i)
-    inside =
-        inside && std::abs(buffer[0][i].x) <= hu + slack && std::abs(buffer[0][i].y) <= hv + slack;
-  if (!inside) {
-    using P = PlanarPoint<S>;
-    count = clip_by_line(
-        buffer[0], count, [hv](const P& p) { return hv - p.y; }, slack, buffer[1]);
-    count = clip_by_line(
-        buffer[1], count, [hu](const P& p) { return p.x + hu; }, slack, buffer[0]);
-    count = clip_by_line(
-        buffer[0], count, [hv](const P& p) { return p.y + hv; }, slack, buffer[1]);
-    count = clip_by_line(
-        buffer[1], count, [hu](const P& p) { return hu - p.x; }, slack, buffer[0]);
+  constexpr S kInf = std::numeric_limits<S>::infinity();
+  S min_x = kInf, max_x = -kInf, min_y = kInf, max_y = -kInf;
+  for (int i = 0; i < count; ++i) {
+    min_x = std::min(min_x, buffer[0][i].x);
+    max_x = std::max(max_x, buffer[0][i].x);
+    min_y = std::min(min_y, buffer[0][i].y);
+    max_y = std::max(max_y, buffer[0][i].y);
   }
-  const int cur = 0;
+  int cur = 0;
+  auto clip = [&](auto&& height) {
+    count = clip_by_line(buffer[cur], count, height, slack, buffer[1 - cur]);
+    cur = 1 - cur;
+  };
+  using P = PlanarPoint<S>;
+  if (max_y > hv + slack) clip([hv](const P& p) { return hv - p.y; });
+  if (min_x < -hu - slack) clip([hu](const P& p) { return p.x + hu; });
+  if (min_y < -hv - slack) clip([hv](const P& p) { return p.y + hv; });
+  if (max_x > hu + slack) clip([hu](const P& p) { return hu - p.x; });
+  // Back to 3D in A's frame: the point of the face above (x, y), and the incident point `depth`
+  // below it along n.
+  const Vec3T<S> n_in_a = to_a ? to_a->rotate(n) : n;
   for (int i = 0; i < count; ++i) {
     const PlanarPoint<S>& p = buffer[cur][i];
     if (!(p.depth >= min_depth)) continue;
@@ -99,12 +93,8 @@ void clip_by_box_face(const Vec3T<S>& h, const PoseT<S>* to_a, const Vec3T<S>& f
     on_ref[iu] = p.x;
     on_ref[iv] = side * p.y;
     on_ref[k] = side * w;
-    Vec3T<S> on_inc = on_ref - p.depth * axis;
-    if (to_a) {
-      on_ref = to_a->apply(on_ref);
-      on_inc = to_a->apply(on_inc);
-    }
-    out.add(on_ref, on_inc, ref_is_a, p);
+    if (to_a) on_ref = to_a->apply(on_ref);
+    out.add(on_ref, on_ref - p.depth * n_in_a, ref_is_a, p);
   }
 }
 
@@ -117,8 +107,7 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
                    typename A::Scalar min_depth, typename A::Scalar size, typename A::Scalar slack,
                    ClippedPoints<typename A::Scalar>& out) {
   using S = typename A::Scalar;
-  auto& fa = out.feature_a;
-  auto& fb = out.feature_b;
+  SupportFeatureT<S> fa, fb;
   support_feature_of(a, n, feature_tolerance * a.bounding_radius(), fa);
   support_feature_of(b, rel.inverse_rotate(-n), feature_tolerance * b.bounding_radius(), fb);
   fb.normal = rel.rotate(fb.normal);
@@ -171,17 +160,29 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
   }
   const S mn = m.dot(n);
   if (!(std::abs(mn) > S(0.5))) return;  // a face this oblique is not a contact face
+  // A box's face: clipped in the box's frame, against its axis-aligned sides.
+  const Vec3T<S> out_of_ref = mn > S(0) ? n : Vec3T<S>(-n);
   if (ref->count >= 3) {
     if constexpr (BoxCore<A>::value) {
-      const PoseT<S>* a_frame = nullptr;  // A's frame is the frame of the results
-      if (ref_is_a)
-        return clip_by_box_face(BoxCore<A>::half_extents(a), a_frame, m, ref->points[0], *inc, n,
-                                true, min_depth, slack, out);
+      if (ref_is_a) {
+        const int k = dominant_axis(m);  // m = +-e_k
+        const S side = m[k] > S(0) ? S(1) : S(-1);
+        return clip_by_box_face(BoxCore<A>::half_extents(a), k, side, side * ref->points[0][k],
+                                inc->points, inc->count, out_of_ref, true, min_depth, slack,
+                                static_cast<const PoseT<S>*>(nullptr), out);
+      }
     }
     if constexpr (BoxCore<B>::value) {
-      if (!ref_is_a)
-        return clip_by_box_face(BoxCore<B>::half_extents(b), &rel, m, ref->points[0], *inc, n,
-                                false, min_depth, slack, out);
+      if (!ref_is_a) {
+        const Vec3T<S> m_b = rel.inverse_rotate(m);
+        const int k = dominant_axis(m_b);
+        const S side = m_b[k] > S(0) ? S(1) : S(-1);
+        Vec3T<S> incident[kMaxFeaturePoints];
+        for (int i = 0; i < inc->count; ++i) incident[i] = rel.inverse_apply(inc->points[i]);
+        return clip_by_box_face(BoxCore<B>::half_extents(b), k, side,
+                                side * rel.inverse_apply(ref->points[0])[k], incident, inc->count,
+                                rel.inverse_rotate(out_of_ref), false, min_depth, slack, &rel, out);
+      }
     }
   }
 
@@ -246,29 +247,6 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
     const Vec3T<S> on_ref = in_plane + ((w - m.dot(in_plane)) * inv_mn) * n;
     const Vec3T<S> on_inc = on_ref + (mn > S(0) ? -p.depth : p.depth) * n;
     out.add(on_ref, on_inc, ref_is_a, p);
-  }
-}
-
-/// clip_features() for two boxes (Box or Rounded<Box>) whose cores overlap along the separating
-/// axis answer's normal `n`, and when their features are two crossing edges (no clipping), the
-/// edges' closest points as the one point.
-template <ConvexShape A, ConvexShape B>
-void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
-                   const Vec3T<typename A::Scalar>& n, typename A::Scalar feature_tolerance,
-                   typename A::Scalar min_depth, typename A::Scalar size, typename A::Scalar slack,
-                   ClippedPoints<typename A::Scalar>& out) {
-  using S = typename A::Scalar;
-  clip_features(a, b, rel, n, feature_tolerance, min_depth, size, slack, out);
-  const auto& fa = out.feature_a;
-  const auto& fb = out.feature_b;
-  if (out.count == 0 && fa.count == 2 && fb.count == 2) {
-    // Already on the surfaces (pushed by the radii).
-    Vec3T<S> on_a, on_b;
-    closest_points_of_segments(fa.points[0], fa.points[1], fb.points[0], fb.points[1], on_a, on_b);
-    out.on_a[0] = on_a;
-    out.on_b[0] = on_b;
-    out.planar[0] = {S(0), S(0), (on_a - on_b).dot(n)};
-    out.count = 1;
   }
 }
 

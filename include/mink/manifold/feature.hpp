@@ -164,49 +164,74 @@ void support_feature(const EllipsoidT<S>& shape, const Vec3T<S>& d, S, SupportFe
   out.set_point(shape.support_core(d));  // strictly convex: always a single point
 }
 
+namespace detail {
+
+/// The shape of a box's support feature along d: the axes it extends along (an axis is free when
+/// flipping its coordinate changes the height d . p by at most `limit`; unit: length, times |d|)
+/// and, for a face, the axis of its normal: the fixed axis, or for a box small against the
+/// tolerance (all free) the axis most aligned with d.
+struct BoxFeatureAxes {
+  bool free[3];
+  int free_count;  ///< 0 a vertex, 1 an edge, 2 or 3 a face
+  int face_axis;   ///< the face's normal axis when free_count >= 2, else -1
+};
+
+template <class S>
+BoxFeatureAxes box_feature_axes(const Vec3T<S>& h, const Vec3T<S>& d, S limit) {
+  BoxFeatureAxes f;
+  for (int i = 0; i < 3; ++i) f.free[i] = S(2) * h[i] * std::abs(d[i]) <= limit;
+  f.free_count = f.free[0] + f.free[1] + f.free[2];
+  f.face_axis = f.free_count == 3   ? dominant_axis(d)
+                : f.free_count == 2 ? (!f.free[0] ? 0 : (!f.free[1] ? 1 : 2))
+                                    : -1;
+  return f;
+}
+
+/// The points of the support feature `f` of a box with half extents h along d (box_feature_axes),
+/// taken to another frame by (rotation, translation) and pushed out by `radius`: a face along its
+/// outward normal, an edge or a vertex along `push` (unit, in the other frame). The order is
+/// support_feature()'s (a face counter-clockwise about its outward normal). Returns the count.
+template <class S>
+int box_feature_points(const Vec3T<S>& h, const Vec3T<S>& d, const BoxFeatureAxes& f,
+                       const Mat3T<S>& rotation, const Vec3T<S>& translation, S radius,
+                       const Vec3T<S>& push, Vec3T<S>* out) {
+  if (f.face_axis >= 0) {
+    const int k = f.face_axis;
+    const S side = sign_nonneg(d[k]);
+    const Vec3T<S> c = rotation.col(k) * (side * (h[k] + radius)) + translation;
+    const Vec3T<S> e1 = rotation.col(kNextAxis[k]) * h[kNextAxis[k]];
+    const Vec3T<S> e2 = rotation.col(kPrevAxis[k]) * h[kPrevAxis[k]];  // e1 x e2 along +e_k
+    const Vec3T<S> e2_signed = side * e2;
+    out[0] = c + e1 + e2_signed;
+    out[1] = c - e1 + e2_signed;
+    out[2] = c - e1 - e2_signed;
+    out[3] = c + e1 - e2_signed;
+    return 4;
+  }
+  Vec3T<S> corner;  // the free axis (an edge's) at 0
+  for (int i = 0; i < 3; ++i) corner[i] = f.free[i] ? S(0) : sign_nonneg(d[i]) * h[i];
+  const Vec3T<S> c = rotation * corner + translation + radius * push;
+  if (f.free_count == 0) {
+    out[0] = c;
+    return 1;
+  }
+  const int free_axis = f.free[0] ? 0 : (f.free[1] ? 1 : 2);
+  const Vec3T<S> e = rotation.col(free_axis) * h[free_axis];
+  out[0] = c - e;
+  out[1] = c + e;
+  return 2;
+}
+
+}  // namespace detail
+
 template <class S>
 void support_feature(const BoxT<S>& box, const Vec3T<S>& d, S tolerance, SupportFeatureT<S>& out) {
-  // An axis is free when flipping its coordinate changes the height by at most the tolerance.
-  const S limit = tolerance * d.norm();
-  const Vec3T<S>& h = box.half_extents;
-  const Vec3T<S> corner = box.support_core(d);
-  const bool fx = S(2) * h.x() * std::abs(d.x()) <= limit;
-  const bool fy = S(2) * h.y() * std::abs(d.y()) <= limit;
-  const bool fz = S(2) * h.z() * std::abs(d.z()) <= limit;
-  const int n_free = fx + fy + fz;
-  // Points are written whole (no stores to single coordinates picked at run time: those stall
-  // the loads that follow them, and this runs twice per box-box manifold).
-  if (n_free == 0) {
-    out.set_point(corner);
-    return;
-  }
-  if (n_free == 1) {
-    // From the free coordinate at -h to +h.
-    const Vec3T<S> mask{S(fx), S(fy), S(fz)};
-    out.set_edge(corner - mask.cwiseProduct(corner + h), corner + mask.cwiseProduct(h - corner));
-    return;
-  }
-  // A face: the fixed axis k, or for a box small against the tolerance (all free) its face most
-  // aligned with d. Corners counter-clockwise about the outward normal.
-  int k = !fx ? 0 : (!fy ? 1 : 2);
-  if (n_free == 3) k = detail::dominant_axis(d);
-  const S side = detail::sign_nonneg(d[k]);
-  const Vec3T<S> c = Vec3T<S>::Unit(k) * (side * h[k]);
-  const Vec3T<S> e1 = Vec3T<S>::Unit((k + 1) % 3) * h[(k + 1) % 3];
-  const Vec3T<S> e2 = Vec3T<S>::Unit((k + 2) % 3) * h[(k + 2) % 3];  // e1 x e2 along +e_k
-  out.count = 4;
-  out.normal = Vec3T<S>::Unit(k) * side;
-  if (side > S(0)) {
-    out.points[0] = c + e1 + e2;
-    out.points[1] = c - e1 + e2;
-    out.points[2] = c - e1 - e2;
-    out.points[3] = c + e1 - e2;
-  } else {
-    out.points[0] = c + e1 - e2;
-    out.points[1] = c - e1 - e2;
-    out.points[2] = c - e1 + e2;
-    out.points[3] = c + e1 + e2;
-  }
+  const detail::BoxFeatureAxes f =
+      detail::box_feature_axes(box.half_extents, d, tolerance * d.norm());
+  out.count = detail::box_feature_points(box.half_extents, d, f, Mat3T<S>::Identity().eval(),
+                                         Vec3T<S>::Zero().eval(), S(0), d, out.points);
+  if (f.face_axis >= 0)
+    out.normal = Vec3T<S>::Unit(f.face_axis) * detail::sign_nonneg(d[f.face_axis]);
 }
 
 template <class S>

@@ -32,9 +32,6 @@ struct BoxCore<Rounded<BoxT<S>>> : std::true_type {
   static const Vec3T<S>& half_extents(const Rounded<BoxT<S>>& b) { return b.shape.half_extents; }
 };
 
-/// The next and the previous axis in cyclic order: e_i x e_(i+1) = e_(i+2).
-inline constexpr int kNextAxis[3] = {1, 2, 0}, kPrevAxis[3] = {2, 0, 1};
-
 /// The 15 separating axes of box A (half extents ha) and box B (half extents hb) whose pose in
 /// A's frame is (r, t): on each axis, the sum of the two radii minus the distance between the
 /// centres (> 0 overlapping, < 0 a gap). Face axes are unit; edge axes e_i x r.col(j) (index

@@ -27,6 +27,9 @@ inline S sign_nonneg(S x) {
   return x >= S(0) ? S(1) : S(-1);
 }
 
+/// The next and the previous axis in cyclic order: e_i x e_(i+1) = e_(i+2).
+inline constexpr int kNextAxis[3] = {1, 2, 0}, kPrevAxis[3] = {2, 0, 1};
+
 /// Index of the largest |v[i]| (the first on ties): the axis of the box face most aligned with v.
 template <class S>
 inline int dominant_axis(const Vec3T<S>& v) {

@@ -1,0 +1,93 @@
+/// @file clip_box_pair.hpp
+/// clip_features() for two boxes (Box or Rounded<Box>): the same features, reference face and
+/// clipped points, found from the boxes' axes instead of general support features and clipped in
+/// the reference box's frame, at about half the cost. The manifold and contact() of two boxes use
+/// it after the separating axis test.
+#pragma once
+
+#include <cmath>
+
+#include "mink/gjk/segment_cores.hpp"
+#include "mink/manifold/clip_features.hpp"
+
+namespace mink::detail {
+
+/// clip_features() for box cores a and b (see the file comment), and when their features are two
+/// crossing edges (no clipping), the edges' closest points as the one point. The arguments are
+/// clip_features()': `rel` is B's pose in A's frame, `n` the unit normal in A's frame.
+template <ConvexShape A, ConvexShape B>
+void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
+                   const Vec3T<typename A::Scalar>& n, typename A::Scalar feature_tolerance,
+                   typename A::Scalar min_depth, typename A::Scalar size, typename A::Scalar slack,
+                   ClippedPoints<typename A::Scalar>& out) {
+  using S = typename A::Scalar;
+  const Vec3T<S>& ha = BoxCore<A>::half_extents(a);
+  const Vec3T<S>& hb = BoxCore<B>::half_extents(b);
+  out.count = 0;
+  // Each box's feature direction in its own frame: A's along n, B's against it.
+  const Vec3T<S> nb = rel.inverse_rotate(-n);
+  const BoxFeatureAxes fa = box_feature_axes(ha, n, feature_tolerance * a.bounding_radius());
+  const BoxFeatureAxes fb = box_feature_axes(hb, nb, feature_tolerance * b.bounding_radius());
+
+  // The reference face, as clip_features() picks it: the face more aligned with the normal, on
+  // a near tie the larger (A on a tie).
+  bool ref_is_a;
+  if (fa.face_axis >= 0 && fb.face_axis >= 0) {
+    const S align_a = std::abs(n[fa.face_axis]), align_b = std::abs(nb[fb.face_axis]);
+    auto area = [](const Vec3T<S>& h, int k) { return h[kNextAxis[k]] * h[kPrevAxis[k]]; };
+    if (std::abs(align_a - align_b) > S(1e-3))
+      ref_is_a = align_a > align_b;
+    else
+      ref_is_a = area(ha, fa.face_axis) >= area(hb, fb.face_axis) * (S(1) - S(1e-6));
+  } else if (fa.face_axis >= 0 || fb.face_axis >= 0) {
+    ref_is_a = fa.face_axis >= 0;
+  } else {
+    if (fa.free_count != 1 || fb.free_count != 1) return;  // a vertex: no clipping
+    Vec3T<S> ea[2], eb[2];
+    box_feature_points(ha, n, fa, Mat3T<S>::Identity().eval(), Vec3T<S>::Zero().eval(),
+                       a.core_radius(), n, ea);
+    box_feature_points(hb, nb, fb, rel.rotation, rel.translation, b.core_radius(), Vec3T<S>(-n),
+                       eb);
+    const Vec3T<S> da = ea[1] - ea[0], db = eb[1] - eb[0];
+    // Parallel edges clip against each other's end planes (rare: the separating axis test skips
+    // axes of nearly parallel edges); crossing ones touch at their closest points.
+    if (da.cross(db).norm() <= feature_tolerance * size * da.norm())
+      clip_features(a, b, rel, n, feature_tolerance, min_depth, size, slack, out);
+    if (out.count == 0) {
+      // Already on the surfaces (pushed by the radii).
+      Vec3T<S> on_a, on_b;
+      closest_points_of_segments(ea[0], ea[1], eb[0], eb[1], on_a, on_b);
+      out.on_a[0] = on_a;
+      out.on_b[0] = on_b;
+      out.planar[0] = {S(0), S(0), (on_a - on_b).dot(n)};
+      out.count = 1;
+    }
+    return;
+  }
+
+  // In the reference box's frame: the incident box's pose, the normal out of the reference face
+  // and the incident box's feature direction (in its own frame).
+  Mat3T<S> r_inc;
+  Vec3T<S> t_inc;
+  if (ref_is_a) {
+    r_inc = rel.rotation;
+    t_inc = rel.translation;
+  } else {
+    r_inc = rel.rotation.transpose();
+    t_inc = -(r_inc * rel.translation);
+  }
+  const Vec3T<S>& n_ref = ref_is_a ? n : nb;
+  const Vec3T<S>& d_inc = ref_is_a ? nb : n;
+  const int k = (ref_is_a ? fa : fb).face_axis;
+  if (!(std::abs(n_ref[k]) > S(0.5))) return;  // a face this oblique is not a contact face
+  const S side = sign_nonneg(n_ref[k]);
+  const S w = (ref_is_a ? ha : hb)[k] + (ref_is_a ? a.core_radius() : b.core_radius());
+  Vec3T<S> incident[4];
+  const int count =
+      box_feature_points(ref_is_a ? hb : ha, d_inc, ref_is_a ? fb : fa, r_inc, t_inc,
+                         ref_is_a ? b.core_radius() : a.core_radius(), Vec3T<S>(-n_ref), incident);
+  clip_by_box_face(ref_is_a ? ha : hb, k, side, w, incident, count, n_ref, ref_is_a, min_depth,
+                   slack, ref_is_a ? nullptr : &rel, out);
+}
+
+}  // namespace mink::detail
