@@ -11,6 +11,7 @@
 /// Result: the lowest index among the points farthest along d. With a NaN direction, 0.
 #pragma once
 
+#include <bit>
 #include <cstddef>
 #include <limits>
 
@@ -94,27 +95,40 @@ inline void lane_store(double* p, LaneVec v) {
 }
 #endif
 
+/// At most 8 points (SSE2, also under AVX2): the dot products in pairs, their maximum by a tree
+/// of vector maxima, and the first index that reaches it from the lanes' equality masks, with no
+/// branch on the data. Lanes past n hold -inf and never count. A maximum that no point reaches (a
+/// NaN direction) goes to the scalar twin, which defines that answer.
+inline std::size_t support_index_few(const double* xs, const double* ys, const double* zs,
+                                     std::size_t n, double dx, double dy, double dz) {
+  constexpr double kLow = -std::numeric_limits<double>::infinity();
+  const __m128d vx = _mm_set1_pd(dx), vy = _mm_set1_pd(dy), vz = _mm_set1_pd(dz);
+  __m128d dots[4];
+  for (std::size_t c = 0, i = 0; c < 4; ++c, i += 2) {
+    // No fused multiply-add: the same rounding as the scalar twin.
+    if (i + 2 <= n)
+      dots[c] = _mm_add_pd(
+          _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(xs + i), vx), _mm_mul_pd(_mm_loadu_pd(ys + i), vy)),
+          _mm_mul_pd(_mm_loadu_pd(zs + i), vz));
+    else
+      dots[c] = _mm_set_pd(kLow, i < n ? xs[i] * dx + ys[i] * dy + zs[i] * dz : kLow);
+  }
+  const __m128d pair_max = _mm_max_pd(_mm_max_pd(dots[0], dots[1]), _mm_max_pd(dots[2], dots[3]));
+  const __m128d best = _mm_max_pd(pair_max, _mm_shuffle_pd(pair_max, pair_max, 1));
+  unsigned mask = 0;
+  for (int c = 0; c < 4; ++c)
+    mask |= unsigned(_mm_movemask_pd(_mm_cmpeq_pd(dots[c], best))) << (2 * c);
+  mask &= (1u << n) - 1;  // a NaN maximum can drop to the padding's -inf
+  if (mask == 0) return support_index_scalar(xs, ys, zs, n, dx, dy, dz);
+  return std::size_t(std::countr_zero(mask));
+}
+
 template <>
 inline std::size_t support_index<double>(const double* xs, const double* ys, const double* zs,
                                          std::size_t n, double dx, double dy, double dz) {
   constexpr int kVectors = 4;
   constexpr std::size_t kBlock = kVectors * kLaneWidth;
-  constexpr std::size_t kFew = 8;
-  if (n <= kFew) {
-    // Few points: the dot products, their maximum by a tree (no chain of dependent compares) and
-    // the first index that reaches it, all without branches on the data. Unused slots are -inf
-    // and never win; a NaN maximum (NaN direction) matches nothing and gives 0.
-    double dots[kFew];
-    for (std::size_t i = 0; i < kFew; ++i)
-      dots[i] =
-          i < n ? xs[i] * dx + ys[i] * dy + zs[i] * dz : -std::numeric_limits<double>::infinity();
-    auto larger = [](double a, double b) { return b > a ? b : a; };
-    const double best = larger(larger(larger(dots[0], dots[1]), larger(dots[2], dots[3])),
-                               larger(larger(dots[4], dots[5]), larger(dots[6], dots[7])));
-    std::size_t best_i = 0;
-    for (std::size_t i = kFew; i-- > 0;) best_i = dots[i] == best && i < n ? i : best_i;
-    return best_i;
-  }
+  if (n <= 8) return support_index_few(xs, ys, zs, n, dx, dy, dz);
   if (n < kBlock) return support_index_scalar(xs, ys, zs, n, dx, dy, dz);
   // Blocks of kBlock points: the dot products and the block's maximum are pure SIMD with no
   // loop-carried dependency; only a block that beats the best so far (about log n of them for a

@@ -71,6 +71,27 @@ TEST(SupportScan, FewPointsTiesGoToTheLowestIndex) {
   }
 }
 
+TEST(SupportScan, FewPointsMatchTheScalarTwin) {
+  // Random points and directions, 1 to 8 points (odd counts end in a half-filled pair), and a NaN
+  // direction, which the twin answers with 0.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t n = 1; n <= 8; ++n) {
+    for (int trial = 0; trial < 200; ++trial) {
+      Soa s;
+      for (std::size_t i = 0; i < n; ++i) {
+        s.x.push_back(u(rng));
+        s.y.push_back(u(rng));
+        s.z.push_back(u(rng));
+      }
+      const Vec3 d(u(rng), u(rng), u(rng));
+      EXPECT_EQ(s.index(d), s.scalar(d)) << n << " points";
+      EXPECT_EQ(s.index(Vec3(nan, d.y(), d.z())), s.scalar(Vec3(nan, d.y(), d.z())));
+    }
+  }
+}
+
 TEST(SupportScan, NanDirectionGivesAValidIndex) {
   Soa s;
   for (int i = 0; i < 20; ++i) {
