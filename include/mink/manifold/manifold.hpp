@@ -18,7 +18,8 @@
 ///     separating axis test (query/box_box.hpp), which gives the same answer for a fixed cost.
 ///  2. The support features (feature.hpp) of A along the normal and of B against it: a face, an
 ///     edge or a vertex of each core, pushed out by the core radius (so a capsule is its segment
-///     moved out by its radius, a sphere one point).
+///     moved out by its radius, a sphere one point). Two boxes read them off their axes
+///     (clip_box_pair.hpp).
 ///  3. Reference = the face more aligned with the normal (the larger face on a near tie, A on a
 ///     tie: a box resting on a table is clipped against the table, so the points are the box's
 ///     corners); incident = the other feature. The incident feature is clipped against the
