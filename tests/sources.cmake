@@ -17,6 +17,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_brute_force_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_property_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_nasty_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/clip_box_pair_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_exact_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_property_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/io/mesh_test.cpp

@@ -12,9 +12,11 @@
 
 namespace mink::detail {
 
-/// clip_features() for box cores a and b (see the file comment), and when their features are two
-/// crossing edges (no clipping), the edges' closest points as the one point. The arguments are
-/// clip_features()': `rel` is B's pose in A's frame, `n` the unit normal in A's frame.
+/// clip_features() for two boxes a and b (Box or Rounded<Box>, see the file comment) whose cores
+/// overlap along `n`, the separating axis test's normal, and when their features are two crossing
+/// edges (no clipping), the edges' closest points as the one point (their difference is along n
+/// because n is the edges' common perpendicular). The arguments are clip_features()': `rel` is B's
+/// pose in A's frame, `n` the unit normal in A's frame.
 template <ConvexShape A, ConvexShape B>
 void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
                    const Vec3T<typename A::Scalar>& n, typename A::Scalar feature_tolerance,
@@ -29,16 +31,14 @@ void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
   const BoxFeatureAxes fa = box_feature_axes(ha, n, feature_tolerance * a.bounding_radius());
   const BoxFeatureAxes fb = box_feature_axes(hb, nb, feature_tolerance * b.bounding_radius());
 
-  // The reference face, as clip_features() picks it: the face more aligned with the normal, on
-  // a near tie the larger (A on a tie).
+  // The reference face, as clip_features() picks it.
   bool ref_is_a;
   if (fa.face_axis >= 0 && fb.face_axis >= 0) {
-    const S align_a = std::abs(n[fa.face_axis]), align_b = std::abs(nb[fb.face_axis]);
+    // A quarter of each face's area: h_u h_v.
     auto area = [](const Vec3T<S>& h, int k) { return h[kNextAxis[k]] * h[kPrevAxis[k]]; };
-    if (std::abs(align_a - align_b) > S(1e-3))
-      ref_is_a = align_a > align_b;
-    else
-      ref_is_a = area(ha, fa.face_axis) >= area(hb, fb.face_axis) * (S(1) - S(1e-6));
+    ref_is_a = reference_is_a(
+        std::abs(n[fa.face_axis]), std::abs(nb[fb.face_axis]),
+        [&] { return area(ha, fa.face_axis); }, [&] { return area(hb, fb.face_axis); });
   } else if (fa.face_axis >= 0 || fb.face_axis >= 0) {
     ref_is_a = fa.face_axis >= 0;
   } else {

@@ -39,6 +39,17 @@ struct ClippedPoints {
   }
 };
 
+/// Whether A's face is the reference when both features are faces: the face more aligned with the
+/// normal (alignments |face normal . n|), or on a near tie (within 1e-3) the larger, A's when the
+/// areas tie to 1e-6, so that a box resting on a table is clipped against the table and its
+/// corners are the points. `area_a`, `area_b` (any common measure of the faces' areas) are called
+/// only on a near tie.
+template <class S, class AreaA, class AreaB>
+bool reference_is_a(S align_a, S align_b, AreaA&& area_a, AreaB&& area_b) {
+  if (std::abs(align_a - align_b) > S(1e-3)) return align_a > align_b;
+  return area_a() >= area_b() * (S(1) - S(1e-6));
+}
+
 /// The clipping of a manifold whose reference face is a face of a box with half extents h, done
 /// in the box's frame, where the face's side planes are axis aligned. The face has the outward
 /// normal side * e_k and the plane side * p[k] = w (h[k] plus the radius). `incident` holds the
@@ -134,10 +145,8 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
           sum += (f.points[i] - f.points[0]).cross(f.points[i + 1] - f.points[0]);
         return sum.norm();
       };
-      if (std::abs(align_a - align_b) > S(1e-3))
-        ref_is_a = align_a > align_b;
-      else
-        ref_is_a = area(fa) >= area(fb) * (S(1) - S(1e-6));
+      ref_is_a = reference_is_a(
+          align_a, align_b, [&] { return area(fa); }, [&] { return area(fb); });
     } else {
       ref_is_a = fa.count >= 3;
     }
@@ -160,13 +169,13 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
   }
   const S mn = m.dot(n);
   if (!(std::abs(mn) > S(0.5))) return;  // a face this oblique is not a contact face
-  // A box's face: clipped in the box's frame, against its axis-aligned sides.
   const Vec3T<S> out_of_ref = mn > S(0) ? n : Vec3T<S>(-n);
+  // A box's face: clipped in the box's frame, against its axis-aligned sides.
   if (ref->count >= 3) {
     if constexpr (BoxCore<A>::value) {
       if (ref_is_a) {
         const int k = dominant_axis(m);  // m = +-e_k
-        const S side = m[k] > S(0) ? S(1) : S(-1);
+        const S side = sign_nonneg(m[k]);
         return clip_by_box_face(BoxCore<A>::half_extents(a), k, side, side * ref->points[0][k],
                                 inc->points, inc->count, out_of_ref, true, min_depth, slack,
                                 static_cast<const PoseT<S>*>(nullptr), out);
@@ -176,7 +185,7 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
       if (!ref_is_a) {
         const Vec3T<S> m_b = rel.inverse_rotate(m);
         const int k = dominant_axis(m_b);
-        const S side = m_b[k] > S(0) ? S(1) : S(-1);
+        const S side = sign_nonneg(m_b[k]);
         Vec3T<S> incident[kMaxFeaturePoints];
         for (int i = 0; i < inc->count; ++i) incident[i] = rel.inverse_apply(inc->points[i]);
         return clip_by_box_face(BoxCore<B>::half_extents(b), k, side,

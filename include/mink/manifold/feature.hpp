@@ -189,8 +189,9 @@ BoxFeatureAxes box_feature_axes(const Vec3T<S>& h, const Vec3T<S>& d, S limit) {
 
 /// The points of the support feature `f` of a box with half extents h along d (box_feature_axes),
 /// taken to another frame by (rotation, translation) and pushed out by `radius`: a face along its
-/// outward normal, an edge or a vertex along `push` (unit, in the other frame). The order is
-/// support_feature()'s (a face counter-clockwise about its outward normal). Returns the count.
+/// outward normal, an edge or a vertex along `push` (unit, in the other frame; unused when the
+/// radius is 0). The order is support_feature()'s (a face counter-clockwise about its outward
+/// normal). Returns the count.
 template <class S>
 int box_feature_points(const Vec3T<S>& h, const Vec3T<S>& d, const BoxFeatureAxes& f,
                        const Mat3T<S>& rotation, const Vec3T<S>& translation, S radius,
@@ -229,7 +230,8 @@ void support_feature(const BoxT<S>& box, const Vec3T<S>& d, S tolerance, Support
   const detail::BoxFeatureAxes f =
       detail::box_feature_axes(box.half_extents, d, tolerance * d.norm());
   out.count = detail::box_feature_points(box.half_extents, d, f, Mat3T<S>::Identity().eval(),
-                                         Vec3T<S>::Zero().eval(), S(0), d, out.points);
+                                         Vec3T<S>::Zero().eval(), S(0), Vec3T<S>::Zero().eval(),
+                                         out.points);
   if (f.face_axis >= 0)
     out.normal = Vec3T<S>::Unit(f.face_axis) * detail::sign_nonneg(d[f.face_axis]);
 }

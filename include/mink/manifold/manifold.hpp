@@ -101,8 +101,7 @@ using ManifoldResult = ManifoldResultT<double>;
 
 namespace detail {
 
-/// Step 4 and the world frame: reduces `clipped` to at most four points of `result`, whose normal
-/// is set.
+/// Step 4 and the world frame: reduces `clipped` to at most four points of `result`.
 template <class S>
 void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
                ManifoldResultT<S>& result) {
@@ -110,11 +109,11 @@ void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
   const int kept = detail::reduce_to_four(clipped.planar, clipped.count, S(1e-9) * size, keep);
   result.count = kept;
   for (int i = 0; i < kept; ++i) {
-    // on_b = on_a - depth * normal (the clipping's construction), so one point is transformed.
-    const S depth = clipped.planar[keep[i]].depth;
+    // Both points transformed: the closest points of two crossing edges clamped to an edge's end
+    // are not apart along the normal, and each must stay on its surface.
     result.points[i].point_a = pose_a.apply(clipped.on_a[keep[i]]);
-    result.points[i].point_b = result.points[i].point_a - depth * result.normal;
-    result.points[i].depth = depth;
+    result.points[i].point_b = pose_a.apply(clipped.on_b[keep[i]]);
+    result.points[i].depth = clipped.planar[keep[i]].depth;
   }
 }
 

@@ -97,12 +97,13 @@ inline void lane_store(double* p, LaneVec v) {
 
 /// At most 8 points (SSE2, also under AVX2): the dot products in pairs, their maximum by a tree
 /// of vector maxima, and the first index that reaches it from the lanes' equality masks, with no
-/// branch on the data. Lanes past n hold -inf and never count. A maximum that no point reaches (a
-/// NaN direction) goes to the scalar twin, which defines that answer.
+/// branch on the data. A NaN dot product (a NaN direction, or inf times a 0 coordinate) counts as
+/// -inf, as it never wins in the scalar twin; lanes past n hold -inf and are masked off.
 inline std::size_t support_index_few(const double* xs, const double* ys, const double* zs,
                                      std::size_t n, double dx, double dy, double dz) {
   constexpr double kLow = -std::numeric_limits<double>::infinity();
   const __m128d vx = _mm_set1_pd(dx), vy = _mm_set1_pd(dy), vz = _mm_set1_pd(dz);
+  const __m128d low = _mm_set1_pd(kLow);
   __m128d dots[4];
   for (std::size_t c = 0, i = 0; c < 4; ++c, i += 2) {
     // No fused multiply-add: the same rounding as the scalar twin.
@@ -112,15 +113,16 @@ inline std::size_t support_index_few(const double* xs, const double* ys, const d
           _mm_mul_pd(_mm_loadu_pd(zs + i), vz));
     else
       dots[c] = _mm_set_pd(kLow, i < n ? xs[i] * dx + ys[i] * dy + zs[i] * dz : kLow);
+    // maxpd returns its second operand when the first is NaN.
+    dots[c] = _mm_max_pd(dots[c], low);
   }
   const __m128d pair_max = _mm_max_pd(_mm_max_pd(dots[0], dots[1]), _mm_max_pd(dots[2], dots[3]));
   const __m128d best = _mm_max_pd(pair_max, _mm_shuffle_pd(pair_max, pair_max, 1));
   unsigned mask = 0;
   for (int c = 0; c < 4; ++c)
     mask |= unsigned(_mm_movemask_pd(_mm_cmpeq_pd(dots[c], best))) << (2 * c);
-  mask &= (1u << n) - 1;  // a NaN maximum can drop to the padding's -inf
-  if (mask == 0) return support_index_scalar(xs, ys, zs, n, dx, dy, dz);
-  return std::size_t(std::countr_zero(mask));
+  mask &= (1u << n) - 1;
+  return mask == 0 ? 0 : std::size_t(std::countr_zero(mask));  // 0: no points
 }
 
 template <>

@@ -72,11 +72,12 @@ TEST(SupportScan, FewPointsTiesGoToTheLowestIndex) {
 }
 
 TEST(SupportScan, FewPointsMatchTheScalarTwin) {
-  // Random points and directions, 1 to 8 points (odd counts end in a half-filled pair), and a NaN
-  // direction, which the twin answers with 0.
+  // Random points and directions, 1 to 8 points (odd counts end in a half-filled pair), a NaN
+  // direction (the twin answers 0) and infinite ones that make some dot products NaN.
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
   for (std::size_t n = 1; n <= 8; ++n) {
     for (int trial = 0; trial < 200; ++trial) {
       Soa s;
@@ -88,6 +89,10 @@ TEST(SupportScan, FewPointsMatchTheScalarTwin) {
       const Vec3 d(u(rng), u(rng), u(rng));
       EXPECT_EQ(s.index(d), s.scalar(d)) << n << " points";
       EXPECT_EQ(s.index(Vec3(nan, d.y(), d.z())), s.scalar(Vec3(nan, d.y(), d.z())));
+      // Some dot products NaN (inf times a 0 coordinate), the others +-inf or finite.
+      for (std::size_t i = 0; i < n; i += 2) s.x[i] = 0;
+      const Vec3 d_inf(trial % 2 ? inf : -inf, d.y(), d.z());
+      EXPECT_EQ(s.index(d_inf), s.scalar(d_inf)) << n << " points, an infinite direction";
     }
   }
 }
