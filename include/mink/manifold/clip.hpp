@@ -91,33 +91,49 @@ int first_near_max(int count, S floor, S slack, Value&& value) {
 template <class S>
 int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* keep) {
   if (count <= 0) return 0;
-  // Not std::hypot: its guard against overflow costs more than the rest of the reduction.
-  auto length = [](S x, S y) { return std::sqrt(x * x + y * y); };
   const int a = first_near_max(count, -std::numeric_limits<S>::infinity(), min_length,
                                [&](int i) { return points[i].depth; });
   keep[0] = a < 0 ? 0 : a;
   const PlanarPoint<S> pa = points[keep[0]];
-  const int b = first_near_max(count, min_length, min_length, [&](int i) {
-    return length(points[i].x - pa.x, points[i].y - pa.y);
-  });
-  if (b < 0) return 1;
+  // The farthest point, on squared lengths: one square root instead of one per point (a point
+  // within min_length of the farthest length l counts as a tie: its squared length is at least
+  // (l - min_length)^2).
+  S length_sq[kMaxClipPoints];
+  S farthest_sq = S(0);
+  int farthest = 0;
+  for (int i = 0; i < count; ++i) {
+    const S x = points[i].x - pa.x, y = points[i].y - pa.y;
+    length_sq[i] = x * x + y * y;
+    if (length_sq[i] > farthest_sq) farthest_sq = length_sq[farthest = i];
+  }
+  if (!(farthest_sq > min_length * min_length)) return 1;
+  const S tie = std::sqrt(farthest_sq) - min_length;
+  int b = 0;
+  while (b < farthest && !(length_sq[b] >= tie * tie)) ++b;
   keep[1] = b;
   const PlanarPoint<S> pb = points[b];
-  // Twice the signed area, counter-clockwise positive.
-  auto area = [](const PlanarPoint<S>& o, const PlanarPoint<S>& p, const PlanarPoint<S>& q) {
-    return (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x);
+  // Twice the signed area of (o, p, q), counter-clockwise positive, as a x + b y + c in q.
+  struct Edge {
+    S a, b, c;
+    S area(const PlanarPoint<S>& q) const { return a * q.x + b * q.y + c; }
   };
-  const S min_area = min_length * length(pb.x - pa.x, pb.y - pa.y);
+  auto edge = [](const PlanarPoint<S>& o, const PlanarPoint<S>& p) {
+    const S dx = p.x - o.x, dy = p.y - o.y;
+    return Edge{-dy, dx, dy * o.x - dx * o.y};
+  };
+  const Edge ab = edge(pa, pb);
+  const S min_area = min_length * std::sqrt(length_sq[b]);
   const int c = first_near_max(count, min_area, min_area,
-                               [&](int i) { return std::abs(area(pa, pb, points[i])); });
+                               [&](int i) { return std::abs(ab.area(points[i])); });
   if (c < 0) return 2;
   keep[2] = c;
   // Counter-clockwise, so that a point outside an edge has a negative area with it.
   PlanarPoint<S> t0 = pa, t1 = pb, t2 = points[c];
-  if (area(t0, t1, t2) < S(0)) std::swap(t1, t2);
+  if (ab.area(t2) < S(0)) std::swap(t1, t2);
+  const Edge e0 = edge(t0, t1), e1 = edge(t1, t2), e2 = edge(t2, t0);
   const int d = first_near_max(count, min_area, min_area, [&](int i) {
     const PlanarPoint<S>& p = points[i];
-    return std::max({-area(t0, t1, p), -area(t1, t2, p), -area(t2, t0, p)});
+    return -std::min(std::min(e0.area(p), e1.area(p)), e2.area(p));
   });
   if (d < 0) return 3;
   keep[3] = d;

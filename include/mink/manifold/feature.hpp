@@ -177,7 +177,8 @@ struct BoxFeatureAxes {
 };
 
 template <class S>
-BoxFeatureAxes box_feature_axes(const Vec3T<S>& h, const Vec3T<S>& d, S limit) {
+[[gnu::always_inline]] inline BoxFeatureAxes box_feature_axes(const Vec3T<S>& h, const Vec3T<S>& d,
+                                                              S limit) {
   BoxFeatureAxes f;
   for (int i = 0; i < 3; ++i) f.free[i] = S(2) * h[i] * std::abs(d[i]) <= limit;
   f.free_count = f.free[0] + f.free[1] + f.free[2];

@@ -100,7 +100,6 @@ template <class S>
 struct BoxBoxAxis {
   S overlap;        ///< least overlap (unit: length); negative when an axis separates the boxes
   Vec3T<S> normal;  ///< unit, in A's frame, from A towards B
-  int axis;         ///< 0..2: A's face axis; 3..5: B's face axis 0..2; 6 + 3 i + j: edge i x j
 };
 
 /// The separating-axis answer for box A (half extents ha) and box B (half extents hb) whose pose
@@ -121,22 +120,25 @@ BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S
     if (axes.face_overlap[k] < axes.face_overlap[best]) best = k;
   S least = axes.face_overlap[best];
   // An edge axis k wins when overlap_k / length_k < min(least, face), compared as x |x|, which
-  // keeps the order, times length_k^2: a product instead of a square root and a division per
-  // axis. `key` is the winner's overlap in that form.
+  // keeps the order, times length_k^2: products instead of a square root and a division per
+  // axis. The winner so far is key / key_length_sq in that form; comparing by cross products
+  // keeps divisions, whose latency would chain from one axis to the next, out of the loop.
   auto signed_square = [](S x) { return x * std::abs(x); };
   const S face_key = signed_square(least - edge_bias);
-  S key = signed_square(least);
+  S key = signed_square(least), key_length_sq = S(1);
   for (int k = 0; k < 9; ++k) {
     const S length_sq = axes.edge_length_sq[k];
     if (!(length_sq > S(1e-12))) continue;
     const S o = signed_square(axes.edge_overlap[k]);
-    if (o < std::min(key, face_key) * length_sq) {
+    if (o < face_key * length_sq && o * key_length_sq < key * length_sq) {
       best = 6 + k;
-      key = o / length_sq;
+      key = o;
+      key_length_sq = length_sq;
     }
   }
 
-  BoxBoxAxis<S> result{least, Vec3T<S>::Zero(), best};
+  // best: 0..2 A's face axis, 3..5 B's face axis 0..2, 6 + 3 i + j the edge axis e_i x r.col(j).
+  BoxBoxAxis<S> result{least, Vec3T<S>::Zero()};
   if (best < 3) {
     result.normal[best] = sign_nonneg(t[best]);
   } else if (best < 6) {
