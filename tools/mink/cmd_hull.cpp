@@ -1,7 +1,4 @@
 // `mink hull`: convex hulls of point sets given as JSON lines or of mesh files (docs/protocol.md).
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -115,21 +112,10 @@ int run_hull(const HullCommandOptions& options) {
                                         std::string& out) {
     runner.answer_line(line, line_number, out);
   };
-  for (const std::string& file : files) {
-    const bool is_stdin = file == "-";
-    const int fd = is_stdin ? STDIN_FILENO : ::open(file.c_str(), O_RDONLY);
-    if (fd < 0) {
-      std::fprintf(stderr, "mink hull: cannot open %s: %s\n", file.c_str(), std::strerror(errno));
-      exit_code = 1;
-      continue;
-    }
-    std::string error;
-    if (!run_lines(fd, stdout, handler, error)) {
-      std::fprintf(stderr, "mink hull: %s: %s\n", is_stdin ? "stdin" : file.c_str(), error.c_str());
-      exit_code = 1;
-    }
-    if (!is_stdin) ::close(fd);
-  }
+  if (run_on_files(files, "mink hull", [&handler](int fd, std::string& error) {
+        return run_lines(fd, stdout, handler, error);
+      }) != 0)
+    exit_code = 1;
   if (!options.obj_path.empty()) {
     std::FILE* obj = std::fopen(options.obj_path.c_str(), "wb");
     const bool written = obj && write_text(runner.obj(), obj);

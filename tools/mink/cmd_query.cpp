@@ -1,10 +1,4 @@
-// `mink query`: the JSON-lines protocol of /work/shared/design/protocol.md on files or stdin.
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
+// `mink query`: the JSON-lines protocol of docs/protocol.md on files or stdin.
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,24 +22,9 @@ int run_query(const QueryCommandOptions& options) {
   QueryStream stream(AnswerOptions{options.timing});
   std::vector<std::string> files = options.files;
   if (files.empty()) files.push_back("-");
-  int exit_code = 0;
-  for (const std::string& file : files) {
-    const bool is_stdin = file == "-";
-    const int fd = is_stdin ? STDIN_FILENO : ::open(file.c_str(), O_RDONLY);
-    if (fd < 0) {
-      std::fprintf(stderr, "mink query: cannot open %s: %s\n", file.c_str(), std::strerror(errno));
-      exit_code = 1;
-      continue;
-    }
-    std::string error;
-    if (!stream.run(fd, stdout, error)) {
-      std::fprintf(stderr, "mink query: %s: %s\n", is_stdin ? "stdin" : file.c_str(),
-                   error.c_str());
-      exit_code = 1;
-    }
-    if (!is_stdin) ::close(fd);
-  }
-  return exit_code;
+  return run_on_files(files, "mink query", [&stream](int fd, std::string& error) {
+    return stream.run(fd, stdout, error);
+  });
 }
 
 }  // namespace

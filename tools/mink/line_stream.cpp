@@ -1,5 +1,6 @@
 #include "line_stream.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -95,6 +96,28 @@ std::string run_lines_on_text(std::string_view text, const LineHandler& handler)
   const std::size_t used = splitter.lines(padded.data(), padded.data() + padded.size(), answers);
   if (used < padded.size()) splitter.line({padded.data() + used, padded.size() - used}, answers);
   return answers;
+}
+
+int run_on_files(const std::vector<std::string>& files, const char* command,
+                 const std::function<bool(int fd, std::string& error)>& run) {
+  int exit_code = 0;
+  for (const std::string& file : files) {
+    const bool is_stdin = file == "-";
+    const int fd = is_stdin ? STDIN_FILENO : ::open(file.c_str(), O_RDONLY);
+    if (fd < 0) {
+      std::fprintf(stderr, "%s: cannot open %s: %s\n", command, file.c_str(), std::strerror(errno));
+      exit_code = 1;
+      continue;
+    }
+    std::string error;
+    if (!run(fd, error)) {
+      std::fprintf(stderr, "%s: %s: %s\n", command, is_stdin ? "stdin" : file.c_str(),
+                   error.c_str());
+      exit_code = 1;
+    }
+    if (!is_stdin) ::close(fd);
+  }
+  return exit_code;
 }
 
 }  // namespace mink::cli

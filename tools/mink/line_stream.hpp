@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace mink::cli {
 
@@ -27,5 +28,12 @@ bool run_lines(int fd, std::FILE* out, const LineHandler& handler, std::string& 
 
 /// The same on text in memory; returns what the handler appended (tests, embedding).
 std::string run_lines_on_text(std::string_view text, const LineHandler& handler);
+
+/// Reads in order each of `files` ("-": standard input) through `run(fd, error)`. A file that
+/// cannot be opened, or whose `run` returns false with `error` set, is reported on stderr as
+/// "<command>: <file>: <reason>" and the others are still read. Returns 0 when every file was
+/// read, else 1 (the exit code of `mink query` and `mink hull`).
+int run_on_files(const std::vector<std::string>& files, const char* command,
+                 const std::function<bool(int fd, std::string& error)>& run);
 
 }  // namespace mink::cli

@@ -65,8 +65,18 @@ void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
     return;
   }
 
-  // In the reference box's frame: the incident box's pose, the normal out of the reference face
-  // and the incident box's feature direction (in its own frame).
+  // Each box's half extents, feature, feature direction (in its own frame: out of the box, towards
+  // the other) and radius, named once for the reference and the incident box.
+  struct BoxSide {
+    const Vec3T<S>& h;
+    const BoxFeatureAxes& f;
+    const Vec3T<S>& d;
+    S radius;
+  };
+  const BoxSide side_a{ha, fa, n, a.core_radius()}, side_b{hb, fb, nb, b.core_radius()};
+  const BoxSide& ref = ref_is_a ? side_a : side_b;
+  const BoxSide& inc = ref_is_a ? side_b : side_a;
+  // The clipping works in the reference box's frame: the incident box's pose there.
   Mat3T<S> r_inc;
   Vec3T<S> t_inc;
   if (ref_is_a) {
@@ -76,18 +86,13 @@ void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
     r_inc = rel.rotation.transpose();
     t_inc = -(r_inc * rel.translation);
   }
-  const Vec3T<S>& n_ref = ref_is_a ? n : nb;
-  const Vec3T<S>& d_inc = ref_is_a ? nb : n;
-  const int k = (ref_is_a ? fa : fb).face_axis;
-  if (!(std::abs(n_ref[k]) > S(0.5))) return;  // a face this oblique is not a contact face
-  const S side = sign_nonneg(n_ref[k]);
-  const S w = (ref_is_a ? ha : hb)[k] + (ref_is_a ? a.core_radius() : b.core_radius());
+  const int k = ref.f.face_axis;
+  if (!(std::abs(ref.d[k]) > S(0.5))) return;  // a face this oblique is not a contact face
   Vec3T<S> incident[4];
   const int count =
-      box_feature_points(ref_is_a ? hb : ha, d_inc, ref_is_a ? fb : fa, r_inc, t_inc,
-                         ref_is_a ? b.core_radius() : a.core_radius(), Vec3T<S>(-n_ref), incident);
-  clip_by_box_face(ref_is_a ? ha : hb, k, side, w, incident, count, n_ref, ref_is_a, min_depth,
-                   slack, ref_is_a ? nullptr : &rel, out);
+      box_feature_points(inc.h, inc.d, inc.f, r_inc, t_inc, inc.radius, Vec3T<S>(-ref.d), incident);
+  clip_by_box_face(ref.h, k, sign_nonneg(ref.d[k]), ref.h[k] + ref.radius, incident, count, ref.d,
+                   ref_is_a, min_depth, slack, ref_is_a ? nullptr : &rel, out);
 }
 
 }  // namespace mink::detail

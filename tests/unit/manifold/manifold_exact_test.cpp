@@ -44,6 +44,21 @@ Quat about_z(double angle) {
   return Quat(Eigen::AngleAxisd(angle, Vec3::UnitZ()));
 }
 
+/// The bottom corners of a box with half extents h whose centre is `centre` in the scene, turned
+/// by `angle` about the scene's z, in the world frame: worked out by hand (the box frame's x, y
+/// axes turned by the angle), not through the library's rotation code.
+std::vector<Vec3> bottom_corners(const Scene& scene, const Vec3& centre, const Vec3& h,
+                                 double angle) {
+  std::vector<Vec3> corners;
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (int sx = -1; sx <= 1; sx += 2)
+    for (int sy = -1; sy <= 1; sy += 2) {
+      const double x = sx * h.x(), y = sy * h.y();
+      corners.push_back(scene.frame.apply(centre + Vec3(c * x - s * y, s * x + c * y, -h.z())));
+    }
+  return corners;
+}
+
 /// Each expected point_b is matched by exactly one manifold point (within tol), whose depth is
 /// `depth` and whose point_a = point_b + depth * normal.
 void expect_points(const ManifoldResult& r, const std::vector<Vec3>& expected_b, double depth,
@@ -77,15 +92,7 @@ TEST(ManifoldExact, BoxRestingOnLargerBox) {
     const ManifoldResult r = mink::manifold(table, pt, box, pb);
     ASSERT_EQ(r.status, mink::Status::Intersecting) << oracle::seed_note(600000 + k);
     EXPECT_LE((r.normal - scene.up()).norm(), 1e-12);
-    // The box's bottom corners by hand: the box frame's x, y axes turned by `angle` about z.
-    std::vector<Vec3> corners;
-    const double c = std::cos(angle), s = std::sin(angle);
-    for (int sx = -1; sx <= 1; sx += 2)
-      for (int sy = -1; sy <= 1; sy += 2) {
-        const double x = sx * h.x(), y = sy * h.y();
-        corners.push_back(scene.frame.apply(centre + Vec3(c * x - s * y, s * x + c * y, -h.z())));
-      }
-    expect_points(r, corners, overlap, 1e-9 * 10);
+    expect_points(r, bottom_corners(scene, centre, h, angle), overlap, 1e-9 * 10);
     EXPECT_NEAR(r.depth, overlap, 1e-12 * 100);
   }
 }
@@ -270,12 +277,7 @@ TEST(ManifoldExact, SpeculativePointsWithinTheMargin) {
     options.margin = 0.06;
     const ManifoldResult r = mink::manifold(table, pt, box, pb, options);
     ASSERT_EQ(r.status, mink::Status::Separated);
-    std::vector<Vec3> corners;
-    for (int i = 0; i < 4; ++i) {
-      const Vec3 local((i & 1 ? 1 : -1) * h.x(), (i & 2 ? 1 : -1) * h.y(), -h.z());
-      corners.push_back(scene.frame.apply(centre + about_z(angle) * local));
-    }
-    expect_points(r, corners, -gap, 1e-9 * 10);
+    expect_points(r, bottom_corners(scene, centre, h, angle), -gap, 1e-9 * 10);
     // Beyond the margin: no points.
     options.margin = 0.5 * gap;
     const ManifoldResult none = mink::manifold(table, pt, box, pb, options);
