@@ -58,24 +58,26 @@ using ContactResult = ContactResultT<double>;
 
 namespace detail {
 
-/// Fills the normal, points, distance or depth of `result` from the closest points of the cores,
-/// on_a and on_b in A's frame, at core distance `core_distance` > 0 (B's core minus A's core
-/// along the normal); `inside` is the sum of the radii plus the touching tolerance.
+/// Fills the distance or depth, normal and points of `result` from the closest points of the
+/// cores, on_a and on_b, in the frame they are given in (the caller maps them to the world):
+/// `length` = |on_b - on_a| > 0, `core_distance` the distance of the cores (B's core minus A's
+/// along the normal), `inside` the sum of the radii plus the touching tolerance.
 template <class S>
-void contact_from_cores(const Vec3T<S>& on_a, const Vec3T<S>& on_b, S core_distance, S radius_a,
-                        S radius_b, S inside, const PoseT<S>& pose_a, ContactResultT<S>& result) {
-  // Normalised by its own length: GJK's |v| can differ from |on_b - on_a| by rounding of the
-  // weights, and the normal must be unit.
-  const Vec3T<S> offset = on_b - on_a;
-  const S length = offset.norm();
-  const Vec3T<S> normal = length > S(0) ? Vec3T<S>(offset / length) : Vec3T<S>::UnitZ();
+[[gnu::always_inline]] inline void contact_from_cores(const Vec3T<S>& on_a, const Vec3T<S>& on_b,
+                                                      S length, S core_distance, S radius_a,
+                                                      S radius_b, S inside,
+                                                      ContactResultT<S>& result) {
+  // Normalised by the points' own distance: GJK's |v| can differ from |on_b - on_a| by rounding
+  // of the weights, and the normal must be unit.
+  const Vec3T<S> normal =
+      length > S(0) ? Vec3T<S>((on_b - on_a) * (S(1) / length)) : Vec3T<S>::UnitZ();
   const S radius = radius_a + radius_b;
   result.intersect = core_distance <= inside;
   result.distance = result.intersect ? S(0) : core_distance - radius;
   result.depth = std::max(S(0), radius - core_distance);
-  result.normal = pose_a.rotate(normal);
-  result.point_a = pose_a.apply(on_a + radius_a * normal);
-  result.point_b = pose_a.apply(on_b - radius_b * normal);
+  result.normal = normal;
+  result.point_a = on_a + radius_a * normal;
+  result.point_b = on_b - radius_b * normal;
 }
 
 }  // namespace detail
@@ -97,20 +99,19 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   const S inside = radius_a + radius_b + touch;
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form while the cores are apart.
-    Vec3T<S> p0, p1, q0, q1, on_a, on_b;
-    detail::SegmentCore<A>::world(a, pose_a, pose_a.translation, p0, p1);
-    detail::SegmentCore<B>::world(b, pose_b, pose_a.translation, q0, q1);
-    detail::closest_points_of_segments(p0, p1, q0, q1, on_a, on_b);
+    Vec3T<S> on_a, on_b;
+    detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b);
     const S core_distance = (on_b - on_a).norm();
     if (!(core_distance <= std::numeric_limits<S>::max())) {
       result.error = detail::kOverflowError;
       return result;
     }
     if (core_distance > touch) {
-      // on_a, on_b are world points shifted to A's origin: use a pose without rotation.
-      const PoseT<S> shift = PoseT<S>::from_translation(pose_a.translation);
-      detail::contact_from_cores(on_a, on_b, core_distance, radius_a, radius_b, inside, shift,
-                                 result);
+      // on_a, on_b are world points shifted to A's origin: shift them back.
+      detail::contact_from_cores(on_a, on_b, core_distance, core_distance, radius_a, radius_b,
+                                 inside, result);
+      result.point_a += pose_a.translation;
+      result.point_b += pose_a.translation;
       result.status = result.intersect ? Status::Intersecting : Status::Separated;
       return result;
     }
@@ -158,7 +159,11 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // Separated, or penetrating by the radii only.
     Vec3T<S> on_a, on_b;
     gjk.simplex.witness_points(on_a, on_b);
-    detail::contact_from_cores(on_a, on_b, gjk.upper, radius_a, radius_b, inside, pose_a, result);
+    detail::contact_from_cores(on_a, on_b, (on_b - on_a).norm(), gjk.upper, radius_a, radius_b,
+                               inside, result);
+    result.normal = pose_a.rotate(result.normal);
+    result.point_a = pose_a.apply(result.point_a);
+    result.point_b = pose_a.apply(result.point_b);
     result.error_bound = std::max(S(0), gjk.upper - gjk.lower);
     result.status = gjk.status == Status::IterationLimit
                         ? Status::IterationLimit

@@ -60,10 +60,8 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form, no iteration. Computed in the world frame
     // shifted to A's origin, like GJK, so far-away pairs keep their precision.
-    Vec3T<S> p0, p1, q0, q1, on_a, on_b;
-    detail::SegmentCore<A>::world(a, pose_a, pose_a.translation, p0, p1);
-    detail::SegmentCore<B>::world(b, pose_b, pose_a.translation, q0, q1);
-    detail::closest_points_of_segments(p0, p1, q0, q1, on_a, on_b);
+    Vec3T<S> on_a, on_b;
+    detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b);
     const S radius_a = a.core_radius(), radius_b = b.core_radius();
     const S core_distance = (on_b - on_a).norm();
     if (!(core_distance <= std::numeric_limits<S>::max())) {
@@ -78,7 +76,7 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     }
     result.status = Status::Separated;
     result.distance = core_distance - radius_a - radius_b;
-    result.normal = (on_b - on_a) / core_distance;
+    result.normal = (on_b - on_a) * (S(1) / core_distance);
     result.point_a = on_a + radius_a * result.normal + pose_a.translation;
     result.point_b = on_b - radius_b * result.normal + pose_a.translation;
     return result;

@@ -46,10 +46,8 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form, no iteration.
-    Vec3T<S> p0, p1, q0, q1, on_a, on_b;
-    detail::SegmentCore<A>::world(a, pose_a, pose_a.translation, p0, p1);
-    detail::SegmentCore<B>::world(b, pose_b, pose_a.translation, q0, q1);
-    detail::closest_points_of_segments(p0, p1, q0, q1, on_a, on_b);
+    Vec3T<S> on_a, on_b;
+    detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b);
     const S inside = a.core_radius() + b.core_radius() +
                      tolerances.relative * (a.bounding_radius() + b.bounding_radius());
     const S distance_sq = (on_b - on_a).squaredNorm();
