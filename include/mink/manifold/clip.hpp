@@ -90,9 +90,10 @@ int first_near_max(int count, S floor, S slack, Value&& value) {
 /// the number kept.
 template <class S>
 int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* keep) {
-  if (count <= 1) {  // most deep random overlaps: a vertex on a face, or crossing edges
+  if (count <= 0) return 0;
+  if (count == 1) {  // most deep random overlaps: a vertex on a face, or crossing edges
     keep[0] = 0;
-    return count < 0 ? 0 : count;
+    return 1;
   }
   const int a = first_near_max(count, -std::numeric_limits<S>::infinity(), min_length,
                                [&](int i) { return points[i].depth; });
