@@ -39,8 +39,10 @@ namespace mink {
 template <class S>
 struct ContactResultT {
   /// Separated or Intersecting (penetrating or touching): every field is valid. IterationLimit:
-  /// GJK or EPA hit the cap; the fields are the best estimate and `error_bound` bounds the error
-  /// of the distance or depth. InvalidInput: nothing was computed and `error` says why.
+  /// GJK or EPA hit the cap, or EPA stopped before its bounds met; the fields are the best
+  /// estimate and `error_bound` bounds the error of the distance or depth (a penetrating
+  /// estimate is then the upper bound: moving B by `depth` along `normal` separates the shapes).
+  /// InvalidInput: nothing was computed and `error` says why.
   Status status = Status::InvalidInput;
   bool intersect = false;               ///< the shapes share a point (touching counts)
   S distance = S(0);                    ///< >= 0 (unit: length); 0 when intersecting
@@ -59,18 +61,15 @@ using ContactResult = ContactResultT<double>;
 namespace detail {
 
 /// Fills the distance or depth, normal and points of `result` from the closest points of the
-/// cores, on_a and on_b, in the frame they are given in (the caller maps them to the world):
-/// `length` = |on_b - on_a| > 0, `core_distance` the distance of the cores (B's core minus A's
-/// along the normal), `inside` the sum of the radii plus the touching tolerance.
+/// cores, on_a and on_b, in the frame they are given in (the caller maps them to the world), and
+/// `normal`, the unit direction from on_a to on_b: `core_distance` is the distance of the cores
+/// (B's core minus A's along the normal), `inside` the sum of the radii plus the touching
+/// tolerance.
 template <class S>
 [[gnu::always_inline]] inline void contact_from_cores(const Vec3T<S>& on_a, const Vec3T<S>& on_b,
-                                                      S length, S core_distance, S radius_a,
-                                                      S radius_b, S inside,
+                                                      const Vec3T<S>& normal, S core_distance,
+                                                      S radius_a, S radius_b, S inside,
                                                       ContactResultT<S>& result) {
-  // Normalised by the points' own distance: GJK's |v| can differ from |on_b - on_a| by rounding
-  // of the weights, and the normal must be unit.
-  const Vec3T<S> normal =
-      length > S(0) ? Vec3T<S>((on_b - on_a) * (S(1) / length)) : Vec3T<S>::UnitZ();
   const S radius = radius_a + radius_b;
   result.intersect = core_distance <= inside;
   result.distance = result.intersect ? S(0) : core_distance - radius;
@@ -99,8 +98,8 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   const S inside = radius_a + radius_b + touch;
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form while the cores are apart.
-    Vec3T<S> on_a, on_b;
-    detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b);
+    Vec3T<S> on_a, on_b, normal = Vec3T<S>::UnitZ();
+    detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b, &normal);
     const S core_distance = (on_b - on_a).norm();
     if (!(core_distance <= std::numeric_limits<S>::max())) {
       result.error = detail::kOverflowError;
@@ -108,8 +107,8 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     }
     if (core_distance > touch) {
       // on_a, on_b are world points shifted to A's origin: shift them back.
-      detail::contact_from_cores(on_a, on_b, core_distance, core_distance, radius_a, radius_b,
-                                 inside, result);
+      detail::contact_from_cores(on_a, on_b, normal, core_distance, radius_a, radius_b, inside,
+                                 result);
       result.point_a += pose_a.translation;
       result.point_b += pose_a.translation;
       result.status = result.intersect ? Status::Intersecting : Status::Separated;
@@ -159,8 +158,8 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // Separated, or penetrating by the radii only.
     Vec3T<S> on_a, on_b;
     gjk.simplex.witness_points(on_a, on_b);
-    detail::contact_from_cores(on_a, on_b, (on_b - on_a).norm(), gjk.upper, radius_a, radius_b,
-                               inside, result);
+    detail::contact_from_cores(on_a, on_b, detail::separation_direction(gjk.simplex, gjk.v),
+                               gjk.upper, radius_a, radius_b, inside, result);
     result.normal = pose_a.rotate(result.normal);
     result.point_a = pose_a.apply(result.point_a);
     result.point_b = pose_a.apply(result.point_b);
@@ -190,7 +189,7 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   const Vec3T<S>& n = epa.normal;
   result.intersect = true;
   result.depth = std::max(S(0), epa.depth) + radius_a + radius_b;
-  result.error_bound = std::max(S(0), epa.upper - epa.depth);
+  result.error_bound = std::max(S(0), epa.upper - epa.lower);
   result.normal = pose_a.rotate(n);
   result.point_a = pose_a.apply(epa.a + radius_a * n);
   result.point_b = pose_a.apply(epa.b - radius_b * n);

@@ -21,9 +21,14 @@
 ///     within tolerance), needs no special case: the face it lies beyond has d <= 0 and is pushed
 ///     out first.
 ///   - Every expansion is checked before it is committed: the visible region must have a single
-///     loop for its horizon, and every new face must have a normal and keep P convex. If rounding
-///     breaks any of that, the expansion is undone and EPA stops with the bracket it has.
+///     loop for its horizon, and every new face must have a normal and keep P convex. A horizon
+///     face the new point lies in the plane of (a reflex or degenerate new face) joins the visible
+///     region and the expansion is tried again; if that does not help, the expansion is undone
+///     and EPA stops with the bracket it has.
 ///   - Every loop is capped (tolerances.max_iterations support calls), and the cap is a status.
+///     A run that stops with its bracket open answers with the upper end (the least support
+///     value seen and its direction), which always separates the shapes; the nearest face is only
+///     a lower bound and its normal can be far from the answer.
 #pragma once
 
 #include <algorithm>
@@ -64,6 +69,9 @@ struct EpaWorkspace {
   std::vector<Horizon> horizon;
   std::vector<int> created;
   std::vector<int> forced;  ///< faces taken into the visible region to keep P convex
+  /// Vertex -> the new face of the current expansion that starts there, or -1 (all -1 between
+  /// expansions).
+  std::vector<int> starting_at;
   /// Live faces by distance, nearest on top (a min-heap; removed faces are skipped when they
   /// surface).
   struct Queued {
@@ -102,11 +110,13 @@ EpaWorkspace<S>& epa_workspace() {
 
 template <class S>
 struct EpaOutcome {
-  /// Intersecting: converged (or stopped by rounding) with the bracket below; IterationLimit:
-  /// the cap was hit; InvalidInput: the arithmetic overflowed.
+  /// Intersecting: converged, the bracket [lower, upper] within the tolerance; IterationLimit:
+  /// the cap was hit or an expansion failed with the bracket open, and depth, normal and points
+  /// are the upper end's (see run_epa); InvalidInput: the arithmetic overflowed.
   Status status = Status::Intersecting;
-  S depth = S(0);                       ///< lower bound on the core depth (may be slightly < 0)
-  S upper = S(0);                       ///< upper bound on the core depth
+  S depth = S(0);  ///< the core depth: the lower bound when converged (may be slightly < 0)
+  S lower = S(0);  ///< lower bound on the core depth
+  S upper = S(0);  ///< upper bound on the core depth
   Vec3T<S> normal = Vec3T<S>::UnitZ();  ///< unit, A's frame: the direction B moves to separate
   Vec3T<S> a = Vec3T<S>::Zero();        ///< deepest point of A's core (A's frame)
   Vec3T<S> b = Vec3T<S>::Zero();        ///< deepest point of B's core (A's frame)
@@ -162,60 +172,86 @@ int make_epa_face(EpaWorkspace<S>& ws, int i, int j, int k) {
   return static_cast<int>(ws.faces.size()) - 1;
 }
 
-/// Connects every face of `ids` with the others of `ids` that share an edge (opposite direction).
-template <class S>
-void link_faces(EpaWorkspace<S>& ws, const int* ids, int count) {
-  for (int x = 0; x < count; ++x) {
-    EpaFace<S>& f = ws.faces[ids[x]];
-    for (int e = 0; e < 3; ++e) {
-      if (f.adj[e] >= 0) continue;
-      const int from = f.v[e], to = f.v[(e + 1) % 3];
-      for (int y = 0; y < count && f.adj[e] < 0; ++y) {
-        if (y == x) continue;
-        EpaFace<S>& g = ws.faces[ids[y]];
-        for (int k = 0; k < 3; ++k) {
-          if (g.v[k] == to && g.v[(k + 1) % 3] == from) {
-            f.adj[e] = ids[y];
-            f.adj_edge[e] = k;
-            g.adj[k] = ids[x];
-            g.adj_edge[k] = e;
-            break;
-          }
-        }
-      }
-    }
+/// The seed tetrahedron over vertices 0..3 as a mesh: its faces, counter-clockwise seen from
+/// outside, and across each face's edge e (from v[e] to v[e + 1]) the neighbour and the index of
+/// the shared edge there. Fixed tables, one per orientation: linking faces by searching for
+/// shared edges cost a dozen mispredicted branches per query.
+struct TetrahedronMesh {
+  int v[4][3];
+  int adj[4][3];
+  int adj_edge[4][3];
+};
+
+/// `flip`: whether (0, 1, 2) faces vertex 3 (a positive volume), so every face turns over.
+constexpr TetrahedronMesh tetrahedron_mesh(bool flip) {
+  constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
+  TetrahedronMesh m{};
+  for (int f = 0; f < 4; ++f) {
+    m.v[f][0] = kFaces[f][0];
+    m.v[f][1] = kFaces[f][flip ? 2 : 1];
+    m.v[f][2] = kFaces[f][flip ? 1 : 2];
   }
+  for (int f = 0; f < 4; ++f)
+    for (int e = 0; e < 3; ++e) {
+      m.adj[f][e] = -1;
+      const int from = m.v[f][e], to = m.v[f][(e + 1) % 3];
+      for (int g = 0; g < 4; ++g)
+        for (int k = 0; k < 3; ++k)
+          if (g != f && m.v[g][k] == to && m.v[g][(k + 1) % 3] == from) {
+            m.adj[f][e] = g;
+            m.adj_edge[f][e] = k;
+          }
+    }
+  return m;
 }
+
+inline constexpr TetrahedronMesh kTetrahedron[2] = {tetrahedron_mesh(false),
+                                                    tetrahedron_mesh(true)};
+
+constexpr bool closed_mesh(const TetrahedronMesh& m) {
+  for (int f = 0; f < 4; ++f)
+    for (int e = 0; e < 3; ++e)
+      if (m.adj[f][e] < 0 || m.adj[m.adj[f][e]][m.adj_edge[f][e]] != f) return false;
+  return true;
+}
+static_assert(closed_mesh(kTetrahedron[0]) && closed_mesh(kTetrahedron[1]));
 
 /// Builds P as the tetrahedron of the 4 points of the workspace. Returns false on degeneracy.
 template <class S>
 bool seed_polytope(EpaWorkspace<S>& ws) {
-  static constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
-  constexpr int count = 4;
   // Orient all faces by one decision, the sign of the volume: testing each face against the
   // centroid is unreliable on a sliver (a needle 1e-9 thick), where rounding of a face normal
   // moves it by more than the centroid's distance to the face, and one flipped face breaks the
   // mesh.
-  // The volume in long double: on such a sliver it is ~1e-17 while double rounding of the triple
-  // product is ~1e-16 (the seed's vertices are 1e-12 of the size off each other's planes at
-  // least, which long double resolves).
-  using Wide = long double;
-  const Vec3T<Wide> w0 = ws.vertices[0].w.template cast<Wide>();
-  const Wide volume = (ws.vertices[1].w.template cast<Wide>() - w0)
-                          .dot((ws.vertices[2].w.template cast<Wide>() - w0)
-                                   .cross(ws.vertices[3].w.template cast<Wide>() - w0));
-  const bool flip = volume > Wide(0);  // then (0, 1, 2) faces vertex 3: inwards
-  int ids[count];
-  for (int f = 0; f < count; ++f) {
-    int i = kFaces[f][0], j = kFaces[f][1], k = kFaces[f][2];
-    if (flip) std::swap(j, k);
-    if ((ids[f] = make_epa_face(ws, i, j, k)) < 0) return false;
+  // The sign is taken in S when the volume clears its rounding error (16 eps |e1| |e2| |e3|
+  // bounds it generously), else in long double: on such a sliver the volume is ~1e-17 while
+  // double rounding of the triple product is ~1e-16 (the seed's vertices are 1e-12 of the size
+  // off each other's planes at least, which long double resolves).
+  const Vec3T<S>& w0 = ws.vertices[0].w;
+  const Vec3T<S> e1 = ws.vertices[1].w - w0, e2 = ws.vertices[2].w - w0, e3 = ws.vertices[3].w - w0;
+  const S volume = e1.dot(e2.cross(e3));
+  const S rounding = S(16) * std::numeric_limits<S>::epsilon();
+  bool flip = volume > S(0);  // then (0, 1, 2) faces vertex 3: inwards
+  if (!(volume * volume >
+        rounding * rounding * e1.squaredNorm() * e2.squaredNorm() * e3.squaredNorm())) {
+    using Wide = long double;
+    const Vec3T<Wide> wide0 = w0.template cast<Wide>();
+    flip = (ws.vertices[1].w.template cast<Wide>() - wide0)
+               .dot((ws.vertices[2].w.template cast<Wide>() - wide0)
+                        .cross(ws.vertices[3].w.template cast<Wide>() - wide0)) > Wide(0);
   }
-  link_faces(ws, ids, count);
-  for (int f = 0; f < count; ++f)
-    for (int e = 0; e < 3; ++e)
-      if (ws.faces[ids[f]].adj[e] < 0) return false;
-  for (int f = 0; f < count; ++f) ws.enqueue(ids[f]);
+  const TetrahedronMesh& mesh = kTetrahedron[flip ? 1 : 0];
+  int ids[4];
+  for (int f = 0; f < 4; ++f)
+    if ((ids[f] = make_epa_face(ws, mesh.v[f][0], mesh.v[f][1], mesh.v[f][2])) < 0) return false;
+  for (int f = 0; f < 4; ++f) {
+    EpaFace<S>& face = ws.faces[ids[f]];
+    for (int e = 0; e < 3; ++e) {
+      face.adj[e] = ids[mesh.adj[f][e]];
+      face.adj_edge[e] = mesh.adj_edge[f][e];
+    }
+    ws.enqueue(ids[f]);
+  }
   return true;
 }
 
@@ -266,7 +302,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     out.a = gjk_a;
     out.b = gjk_b;
     const S h = normal.dot(support(normal).w);
-    out.depth = std::min(S(0), h);
+    out.depth = out.lower = std::min(S(0), h);
     out.upper = std::max(S(0), h);
     return out;
   };
@@ -368,6 +404,9 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
 
   // 2. Expand.
   S upper = std::numeric_limits<S>::infinity();
+  Vec3T<S> upper_normal = Vec3T<S>::UnitZ();  // the direction of the least support value seen
+  SimplexVertexT<S> upper_vertex;             // and its support point
+  bool converged = false;
   int best = -1;
   while (true) {
     best = ws.nearest();
@@ -384,11 +423,21 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       out.status = Status::InvalidInput;
       return out;
     }
-    upper = std::min(upper, h);
-    if (h - face_distance <= gain_tol) break;  // the face lies on the boundary of A - B
+    if (h < upper) {
+      upper = h;
+      upper_vertex = w;
+      upper_normal = face.n / length;
+    }
+    if (h - face_distance <= gain_tol) {  // the face lies on the boundary of A - B
+      converged = true;
+      break;
+    }
     bool repeated = false;
     for (int k = 0; k < 3; ++k) repeated |= ws.vertices[face.v[k]].w == w.w;
-    if (repeated) break;
+    if (repeated) {  // w is a vertex of the face: h is its distance, to rounding
+      converged = true;
+      break;
+    }
 
     // Faces visible from w: a connected region grown from the nearest face. A neighbour that
     // w does not see but that would meet the new faces at a reflex angle (w lies within rounding
@@ -411,7 +460,8 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
         for (int e = 0; e < 3; ++e) {
           const int g = ws.faces[f].adj[e];
           if (!ws.faces[g].live) continue;
-          const bool forced = std::find(ws.forced.begin(), ws.forced.end(), g) != ws.forced.end();
+          const bool forced = !ws.forced.empty() &&
+                              std::find(ws.forced.begin(), ws.forced.end(), g) != ws.forced.end();
           if (forced || ws.faces[g].n.dot(w.w) - ws.faces[g].offset > S(0)) {
             ws.faces[g].live = false;
             ws.removed.push_back(g);
@@ -431,7 +481,11 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
         const int far = ws.faces[g].v[(k + 2) % 3];
         const int c = make_epa_face(ws, from, to, wi);
         if (c < 0) {
+          // w lies on the line of the horizon edge, so in the plane of g: a flat face of A - B
+          // sampled at an interior point (the centre of a cylinder's cap) and then at two rim
+          // points on either side of it. Taking g into the region retriangulates that plane.
           valid = false;
+          reflex = g;
           break;
         }
         ws.created.push_back(c);
@@ -447,16 +501,19 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
         }
       }
       // The horizon must be one simple loop: each new face's edge 1 (to -> w) meets exactly one
-      // other new face's edge 2 (w -> from).
+      // other new face's edge 2 (w -> from), i.e. every horizon vertex starts exactly one new
+      // face. Found through a table from vertex to the new face that starts there: comparing
+      // all pairs cost about fifty mispredicted branches per query.
+      if (ws.starting_at.size() < ws.vertices.size()) ws.starting_at.resize(ws.vertices.size(), -1);
+      for (std::size_t c_i = 0; valid && c_i < ws.created.size(); ++c_i) {
+        int& slot = ws.starting_at[ws.faces[ws.created[c_i]].v[0]];
+        if (slot >= 0) valid = false;  // two new faces start at one vertex: not a simple loop
+        slot = ws.created[c_i];
+      }
       for (std::size_t c_i = 0; valid && c_i < ws.created.size(); ++c_i) {
         const int c = ws.created[c_i];
-        int matches = 0, match = -1;
-        for (const int o : ws.created)
-          if (o != c && ws.faces[o].v[0] == ws.faces[c].v[1]) {
-            ++matches;
-            match = o;
-          }
-        if (matches != 1) {
+        const int match = ws.starting_at[ws.faces[c].v[1]];
+        if (match < 0) {
           valid = false;
           break;
         }
@@ -465,6 +522,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
         ws.faces[match].adj[2] = c;
         ws.faces[match].adj_edge[2] = 1;
       }
+      for (const int c : ws.created) ws.starting_at[ws.faces[c].v[0]] = -1;
       if (valid) break;
       // Undo this attempt: drop the new faces, revive the removed ones.
       ws.faces.resize(ws.faces.size() - ws.created.size());
@@ -539,8 +597,19 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     out.b += weight * ws.vertices[ws.faces[holder].v[k]].b;
   }
   out.normal = normal;
-  out.depth = depth;
+  out.depth = out.lower = depth;
   out.upper = std::max(depth, upper);
+  if (!converged && upper < std::numeric_limits<S>::infinity() && upper - depth > gain_tol) {
+    // Stopped with the bracket open (the cap, or an expansion that rounding would not allow):
+    // the nearest face is only a lower bound and its normal may be far from the answer, while
+    // moving B by h(n) along the normal n of the least support value h seen always separates
+    // the shapes. That is the estimate to give; `upper - depth` (error_bound) says how good.
+    out.normal = upper_normal;
+    out.depth = upper;
+    out.a = upper_vertex.a;
+    out.b = upper_vertex.a - upper * upper_normal;
+    if (out.status == Status::Intersecting) out.status = Status::IterationLimit;
+  }
   return out;
 }
 

@@ -60,8 +60,8 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form, no iteration. Computed in the world frame
     // shifted to A's origin, like GJK, so far-away pairs keep their precision.
-    Vec3T<S> on_a, on_b;
-    detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b);
+    Vec3T<S> on_a, on_b, normal = Vec3T<S>::UnitZ();
+    detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b, &normal);
     const S radius_a = a.core_radius(), radius_b = b.core_radius();
     const S core_distance = (on_b - on_a).norm();
     if (!(core_distance <= std::numeric_limits<S>::max())) {
@@ -76,7 +76,7 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     }
     result.status = Status::Separated;
     result.distance = core_distance - radius_a - radius_b;
-    result.normal = (on_b - on_a) * (S(1) / core_distance);
+    result.normal = normal;
     result.point_a = on_a + radius_a * result.normal + pose_a.translation;
     result.point_b = on_b - radius_b * result.normal + pose_a.translation;
     return result;
@@ -101,7 +101,7 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   result.intersect = gjk.status == Status::IterationLimit &&
                      core_distance <= radius_a + radius_b + tolerances.relative * size;
   if (!(core_distance > S(0))) return result;
-  const Vec3T<S> normal_local = -gjk.v / core_distance;
+  const Vec3T<S> normal_local = detail::separation_direction(gjk.simplex, gjk.v);
   Vec3T<S> on_a, on_b;
   gjk.simplex.witness_points(on_a, on_b);
   on_a += radius_a * normal_local;

@@ -85,11 +85,11 @@ inline constexpr bool kSegmentCores = SegmentCore<A>::value&& SegmentCore<B>::va
 /// and the distance stays within 1e-14 of the size. Closer to parallel it cancels catastrophically
 /// (1e-8 errors at angles near 1e-8 rad), so u comes from cross products, whose error grows as
 /// 1 / sin theta only, which the distance's slope sin theta cancels.
+/// `u_out`, `v_out` (optional) receive u and v.
 template <class S>
-[[gnu::always_inline]] inline void closest_points_of_segments(const CoreSegment<S>& p,
-                                                              const CoreSegment<S>& q,
-                                                              Vec3T<S>& closest_p,
-                                                              Vec3T<S>& closest_q) {
+[[gnu::always_inline]] inline void closest_points_of_segments(
+    const CoreSegment<S>& p, const CoreSegment<S>& q, Vec3T<S>& closest_p, Vec3T<S>& closest_q,
+    S* u_out = nullptr, S* v_out = nullptr) {
   const Vec3T<S>&hp = p.half, &hq = q.half;
   const Vec3T<S> w = q.centre - p.centre;
   const S a = hp.squaredNorm(), e = hq.squaredNorm(), b = hp.dot(hq);
@@ -120,6 +120,40 @@ template <class S>
   }
   closest_p = p.centre + u * hp;
   closest_q = q.centre + v * hq;
+  if (u_out) *u_out = u;
+  if (v_out) *v_out = v;
+}
+
+/// The unit direction of `gap` = closest_q - closest_p (> 0) for the closest points of segments p
+/// and q at parameters u and v, made orthogonal to each segment whose closest point is interior
+/// (|u| < 1): there the true direction is exactly orthogonal to it, but `gap`, a difference of
+/// points some L from the origin, carries rounding of eps L in every direction. When the cores
+/// nearly meet (a sphere's centre on a capsule's axis, crossing capsules) that tilts it by
+/// eps L / |gap| along the segment, and every radian of tilt costs half the segment's length of
+/// depth along the normal (1e-4 of the size for cores 1e-12 apart). Tilts within the plane
+/// orthogonal to the segments are harmless: all those directions give the same depth to within
+/// |gap|.
+template <class S>
+Vec3T<S> segment_gap_direction(const CoreSegment<S>& p, const CoreSegment<S>& q, S u, S v,
+                               const Vec3T<S>& gap) {
+  const S pp = p.half.squaredNorm(), qq = q.half.squaredNorm();
+  const bool across_p = pp > S(0) && std::abs(u) < S(1);
+  const bool across_q = qq > S(0) && std::abs(v) < S(1);
+  Vec3T<S> n = gap;
+  const Vec3T<S> both = p.half.cross(q.half);
+  const S bb = both.squaredNorm();
+  if (across_p && across_q && bb > S(1e-8) * pp * qq) {
+    // Orthogonal to both segments (they are 1e-4 rad or more from parallel): their cross product,
+    // the side of `gap`.
+    n = both.dot(gap) >= S(0) ? both : Vec3T<S>(-both);
+  } else {
+    if (across_p) n -= p.half * (n.dot(p.half) / pp);
+    if (across_q) n -= q.half * (n.dot(q.half) / qq);
+  }
+  const S length = n.norm();
+  // A projection that leaves (nearly) nothing: the gap is rounding only; keep its direction.
+  if (!(length > S(1e-3) * gap.norm())) return gap.normalized();
+  return n / length;
 }
 
 /// The same for segments given by their end points p0-p1 and q0-q1.
@@ -133,12 +167,22 @@ void closest_points_of_segments(const Vec3T<S>& p0, const Vec3T<S>& p1, const Ve
 
 /// Closest points of the cores of a (at pose_a) and b (at pose_b), both points or segments, in
 /// the world frame shifted to A's origin (which keeps far-away pairs precise).
+/// `unit` (optional) receives the direction from on_a to on_b, segment_gap_direction()'s, when the
+/// points differ (else it is left as it was).
 template <class A, class B>
 void closest_core_points(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
                          const PoseT<typename A::Scalar>& pose_b, Vec3T<typename A::Scalar>& on_a,
-                         Vec3T<typename A::Scalar>& on_b) {
-  closest_points_of_segments(SegmentCore<A>::world(a, pose_a, pose_a.translation),
-                             SegmentCore<B>::world(b, pose_b, pose_a.translation), on_a, on_b);
+                         Vec3T<typename A::Scalar>& on_b,
+                         Vec3T<typename A::Scalar>* unit = nullptr) {
+  using S = typename A::Scalar;
+  const CoreSegment<S> p = SegmentCore<A>::world(a, pose_a, pose_a.translation);
+  const CoreSegment<S> q = SegmentCore<B>::world(b, pose_b, pose_a.translation);
+  S u = S(0), v = S(0);
+  closest_points_of_segments(p, q, on_a, on_b, &u, &v);
+  if (unit) {
+    const Vec3T<S> gap = on_b - on_a;
+    if (gap.squaredNorm() > S(0)) *unit = segment_gap_direction(p, q, u, v, gap);
+  }
 }
 
 }  // namespace mink::detail

@@ -238,6 +238,36 @@ template <class S>
   return kept;
 }
 
+/// The unit direction of -v, where v (|v| > 0) is the point of the reduced simplex closest to the
+/// origin: the direction from A's closest point to B's. v is computed from support points some L
+/// from the origin, so it carries rounding of eps L in every direction, which tilts it by
+/// eps L / |v| when the cores nearly meet; a tilt out of the closest feature's normal plane costs
+/// the feature's extent times the tilt (a sphere centre 1e-10 above a rounded box's core face).
+/// But the closest point is interior to the reduced simplex, so -v is exactly orthogonal to it:
+/// a segment's direction is projected out, and a triangle's normal comes from its edges' cross
+/// product (when the triangle is not a sliver, sine of its angles above 0.01).
+template <class S>
+Vec3T<S> separation_direction(const SimplexT<S>& simplex, const Vec3T<S>& v) {
+  const S length_v = v.norm();
+  if (!(length_v > S(0))) return Vec3T<S>::UnitZ();  // no simplex: any unit vector
+  Vec3T<S> n = -v;
+  if (simplex.size == 2) {
+    const Vec3T<S> t = simplex.vertices[1].w - simplex.vertices[0].w;
+    const S tt = t.squaredNorm();
+    if (tt > S(0)) n -= t * (n.dot(t) / tt);
+  } else if (simplex.size == 3) {
+    const Vec3T<S> e1 = simplex.vertices[1].w - simplex.vertices[0].w;
+    const Vec3T<S> e2 = simplex.vertices[2].w - simplex.vertices[0].w;
+    const Vec3T<S> c = e1.cross(e2);
+    if (c.squaredNorm() > S(1e-4) * e1.squaredNorm() * e2.squaredNorm())
+      n = c.dot(v) <= S(0) ? c : Vec3T<S>(-c);
+  }
+  const S length = n.norm();
+  // Nothing left but rounding (v was rounding itself): keep -v.
+  if (!(length > S(1e-3) * length_v)) return -v / length_v;
+  return n / length;
+}
+
 /// Writes to `out` the smallest sub-simplex of `in` whose hull holds the point of `in` closest to
 /// the origin, with its weights, and returns that point. `in` and `out` may be the same simplex.
 template <class S>
