@@ -99,8 +99,7 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form while the cores are apart.
     Vec3T<S> on_a, on_b, normal = Vec3T<S>::UnitZ();
-    detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b, &normal);
-    const S core_distance = (on_b - on_a).norm();
+    const S core_distance = detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b, &normal);
     if (!(core_distance <= std::numeric_limits<S>::max())) {
       result.error = detail::kOverflowError;
       return result;

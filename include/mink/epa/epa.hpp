@@ -372,6 +372,10 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       // A - B is a segment: any direction orthogonal to it; prefer the line of centres'
       // component orthogonal to it, which separates concentric-looking pairs the expected way.
       Vec3T<S> normal = fallback - e * (fallback.dot(e) / e.squaredNorm());
+      // Projected twice: when the line of centres runs nearly along the segment (a sphere's
+      // centre on a capsule's axis, off its middle), one projection leaves a component along it
+      // of eps / |what is left|, and every unit of it costs the segment's length in depth.
+      normal -= e * (normal.dot(e) / e.squaredNorm());
       normal = normal.squaredNorm() > S(1e-24) ? Vec3T<S>(normal.normalized()) : u1;
       return degenerate(normal);
     }

@@ -61,9 +61,8 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // Spheres, capsules, points, segments: closed form, no iteration. Computed in the world frame
     // shifted to A's origin, like GJK, so far-away pairs keep their precision.
     Vec3T<S> on_a, on_b, normal = Vec3T<S>::UnitZ();
-    detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b, &normal);
+    const S core_distance = detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b, &normal);
     const S radius_a = a.core_radius(), radius_b = b.core_radius();
-    const S core_distance = (on_b - on_a).norm();
     if (!(core_distance <= std::numeric_limits<S>::max())) {
       result.error = detail::kOverflowError;
       return result;

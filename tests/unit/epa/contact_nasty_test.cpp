@@ -519,6 +519,15 @@ TEST(ContactNasty, CoresAlmostMeeting) {
           capsule_support(pb.translation, axis, 0, sphere.radius, -r.normal);
       worst_depth = std::max(worst_depth, std::abs(r.depth - depth) / size);
       worst_gap = std::max(worst_gap, (h - r.depth) / size);
+      // And the sphere as A: its centre is then the frame's origin, and the rounding is in the
+      // capsule's terms.
+      const auto swapped = mink::contact(sphere, pb, cap, pa);
+      ASSERT_TRUE(oracle::all_finite(swapped));
+      const double h_swapped =
+          capsule_support(pb.translation, axis, 0, sphere.radius, swapped.normal) +
+          capsule_support(pa.translation, axis, cap.half_height, cap.radius, -swapped.normal);
+      worst_depth = std::max(worst_depth, std::abs(swapped.depth - depth) / size);
+      worst_gap = std::max(worst_gap, (h_swapped - swapped.depth) / size);
     } else {
       const mink::Capsule other{scale(rng) * 0.5, scale(rng)};
       const Vec3 axis_b = (axis.cross(side) + 0.3 * unit(rng) * axis).normalized();
