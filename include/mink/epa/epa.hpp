@@ -22,9 +22,9 @@
 ///     out first.
 ///   - Every expansion is checked before it is committed: the visible region must have a single
 ///     loop for its horizon, and every new face must have a normal and keep P convex. A horizon
-///     face the new point lies in the plane of (a reflex or degenerate new face) joins the visible
-///     region and the expansion is tried again; if that does not help, the expansion is undone
-///     and EPA stops with the bracket it has.
+///     face the new point lies in the plane of (a reflex, degenerate or folded new face) joins the
+///     visible region and the expansion is tried again; if that does not help, the expansion is
+///     undone and EPA stops with the bracket it has.
 ///   - Every loop is capped (tolerances.max_iterations support calls), and the cap is a status.
 ///     A run that stops with its bracket open answers with the upper end (the least support
 ///     value seen and its direction), which always separates the shapes; the nearest face is only
@@ -497,8 +497,12 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
         created.adj[0] = g;
         created.adj_edge[0] = k;
         // Convexity across the horizon edge: the neighbour's far vertex is below the new face.
+        // When it lies in the new face's plane (w is in g's plane: a flat facet of A - B sampled
+        // at several points), the two faces must also face the same way: opposite normals mean
+        // the new face folds back over g, and P would turn inside out there.
         const S above = created.n.dot(ws.vertices[far].w) - created.offset;
-        if (above > S(0) && above * above > flat_tol * flat_tol * created.nn) {
+        const bool off_plane = above * above > flat_tol * flat_tol * created.nn;
+        if (off_plane ? above > S(0) : created.n.dot(ws.faces[g].n) < S(0)) {
           valid = false;
           reflex = g;
           break;

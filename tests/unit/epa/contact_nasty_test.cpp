@@ -455,6 +455,31 @@ TEST(ContactNasty, StackedCoaxialCylinders) {
   }
 }
 
+TEST(ContactNasty, FlatBoxOnThinDisc) {
+  // A box with one zero extent standing on a thin disc, sunk by a hair: A - B's top is a flat
+  // facet that EPA samples at the cap's centre and at rim points level with it, all in one plane
+  // with earlier support points. A new face over a coplanar horizon face used to fold back over
+  // it (opposite normals, nothing above either), P turned inside out there, the support points
+  // then repeated vertices of P until the cap, and the answer was 0.18 instead of 2.3e-8. The
+  // first case is the one the curved-shape oracle found, to the last digit.
+  const mink::Cylinder disc{0.19936074565939507, 0.0020954995931268842};
+  for (const Vec3 half : {Vec3(0, 0.25990005091321328, 0.23156408973381232),
+                          Vec3(0.25990005091321328, 0, 0.23156408973381232), Vec3(0, 0.1, 0.05)}) {
+    const mink::Box box{half};
+    const double size = std::hypot(disc.radius, disc.half_height) + half.norm();
+    for (const double sink : {2.2791181472463226e-08, 1e-12, 1e-4, 1e-3}) {
+      for (const double angle : {M_PI / 2, 0.0, 0.3}) {
+        SCOPED_TRACE(testing::Message()
+                     << half.transpose() << " sink " << sink << " angle " << angle);
+        const double z = disc.half_height + half.z() - sink;
+        expect_depth(disc, rotated(Vec3::Zero(), angle, Vec3::UnitZ()), box,
+                     rotated(Vec3(0, 0, z), angle, Vec3::UnitZ()), sink, 1e-9 * size, Vec3::UnitZ(),
+                     1e-9);
+      }
+    }
+  }
+}
+
 TEST(ContactNasty, CoaxialCylindersDeepSideways) {
   // B sunk so deep along the axis that sliding it out sideways is shorter: depth 2r along any
   // radial direction. EPA cannot close its bracket on the curved side of A - B (every radial
