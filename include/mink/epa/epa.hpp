@@ -265,6 +265,119 @@ Vec3T<S> orthogonal(const Vec3T<S>& e) {
   return e.cross(axis);
 }
 
+/// Pushes `face` of P out to the support point w beyond it: removes the faces w sees (a
+/// connected region grown from `face`) and closes the hole with new faces from its horizon to w.
+/// A neighbour that w does not see but that would meet the new faces at a reflex angle, with no
+/// area or folded back (w lies within rounding of its plane: a curved core near convergence, a
+/// flat facet sampled at several points) is added to the region and the expansion tried again.
+/// Returns false, with P unchanged, if that does not give a valid convex P.
+template <class S>
+bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, S flat_tol) {
+  const int wi = static_cast<int>(ws.vertices.size());
+  ws.vertices.push_back(w);
+  ws.forced.clear();
+  bool valid = false;
+  for (int attempt = 0; attempt < kMaxExpansionAttempts; ++attempt) {
+    ws.removed.clear();
+    ws.horizon.clear();
+    ws.stack.clear();
+    ws.faces[face].live = false;
+    ws.removed.push_back(face);
+    ws.stack.push_back(face);
+    while (!ws.stack.empty()) {
+      const int f = ws.stack.back();
+      ws.stack.pop_back();
+      for (int e = 0; e < 3; ++e) {
+        const int g = ws.faces[f].adj[e];
+        if (!ws.faces[g].live) continue;
+        const bool forced = !ws.forced.empty() &&
+                            std::find(ws.forced.begin(), ws.forced.end(), g) != ws.forced.end();
+        if (forced || ws.faces[g].n.dot(w.w) - ws.faces[g].offset > S(0)) {
+          ws.faces[g].live = false;
+          ws.removed.push_back(g);
+          ws.stack.push_back(g);
+        } else {
+          ws.horizon.push_back({g, ws.faces[f].adj_edge[e]});
+        }
+      }
+    }
+    // New faces over the horizon, checked before anything is linked.
+    valid = ws.horizon.size() >= 3;
+    int reflex = -1;
+    ws.created.clear();
+    for (std::size_t h_i = 0; valid && h_i < ws.horizon.size(); ++h_i) {
+      const auto [g, k] = ws.horizon[h_i];
+      const int from = ws.faces[g].v[(k + 1) % 3], to = ws.faces[g].v[k];
+      const int far = ws.faces[g].v[(k + 2) % 3];
+      const int c = make_epa_face(ws, from, to, wi);
+      if (c < 0) {
+        // w lies on the line of the horizon edge, so in the plane of g: a flat face of A - B
+        // sampled at an interior point (the centre of a cylinder's cap) and then at two rim
+        // points on either side of it. Taking g into the region retriangulates that plane.
+        valid = false;
+        reflex = g;
+        break;
+      }
+      ws.created.push_back(c);
+      EpaFace<S>& created = ws.faces[c];
+      created.adj[0] = g;
+      created.adj_edge[0] = k;
+      // Convexity across the horizon edge: the neighbour's far vertex is below the new face.
+      // When it lies in the new face's plane (w is in g's plane: a flat facet of A - B sampled
+      // at several points), the two faces must also face the same way: opposite normals mean
+      // the new face folds back over g, and P would turn inside out there.
+      const S above = created.n.dot(ws.vertices[far].w) - created.offset;
+      const bool off_plane = above * above > flat_tol * flat_tol * created.nn;
+      if (off_plane ? above > S(0) : created.n.dot(ws.faces[g].n) < S(0)) {
+        valid = false;
+        reflex = g;
+        break;
+      }
+    }
+    // The horizon must be one simple loop: each new face's edge 1 (to -> w) meets exactly one
+    // other new face's edge 2 (w -> from), i.e. every horizon vertex starts exactly one new
+    // face. Found through a table from vertex to the new face that starts there: comparing
+    // all pairs cost about fifty mispredicted branches per query.
+    if (ws.starting_at.size() < ws.vertices.size()) ws.starting_at.resize(ws.vertices.size(), -1);
+    for (std::size_t c_i = 0; valid && c_i < ws.created.size(); ++c_i) {
+      int& slot = ws.starting_at[ws.faces[ws.created[c_i]].v[0]];
+      if (slot >= 0) valid = false;  // two new faces start at one vertex: not a simple loop
+      slot = ws.created[c_i];
+    }
+    for (std::size_t c_i = 0; valid && c_i < ws.created.size(); ++c_i) {
+      const int c = ws.created[c_i];
+      const int match = ws.starting_at[ws.faces[c].v[1]];
+      if (match < 0) {
+        valid = false;
+        break;
+      }
+      ws.faces[c].adj[1] = match;
+      ws.faces[c].adj_edge[1] = 2;
+      ws.faces[match].adj[2] = c;
+      ws.faces[match].adj_edge[2] = 1;
+    }
+    for (const int c : ws.created) ws.starting_at[ws.faces[c].v[0]] = -1;
+    if (valid) break;
+    // Undo this attempt: drop the new faces, revive the removed ones.
+    ws.faces.resize(ws.faces.size() - ws.created.size());
+    for (const int f : ws.removed) ws.faces[f].live = true;
+    if (reflex < 0) break;
+    ws.forced.push_back(reflex);
+  }
+  if (!valid) {
+    ws.vertices.pop_back();
+    return false;
+  }
+  for (const int c : ws.created) {
+    const EpaFace<S>& created = ws.faces[c];
+    EpaFace<S>& neighbour = ws.faces[created.adj[0]];
+    neighbour.adj[created.adj_edge[0]] = c;
+    neighbour.adj_edge[created.adj_edge[0]] = 0;
+    ws.enqueue(c);
+  }
+  return true;
+}
+
 /// EPA on the cores of `diff`, seeded by GJK's final `simplex` (the cores intersect or touch
 /// within tolerance). `size` is the sum of the bounding radii; the expansion stops when a push
 /// gains at most `tol.relative_depth * size`. `fallback` is the normal to use when A - B is a
@@ -406,152 +519,89 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   }
   if (!seed_polytope(ws)) return degenerate(fallback);
 
-  // 2. Expand.
+  // 2. Expand the face nearest the origin, until the bracket closes.
   S upper = std::numeric_limits<S>::infinity();
   Vec3T<S> upper_normal = Vec3T<S>::UnitZ();  // the direction of the least support value seen
   SimplexVertexT<S> upper_vertex;             // and its support point
-  bool converged = false;
-  int best = -1;
-  while (true) {
-    best = ws.nearest();
-    const EpaFace<S>& face = ws.faces[best];
-    if (out.iterations >= tol.max_iterations) {
-      out.status = Status::IterationLimit;
-      break;
-    }
+  enum class Step { Expanded, Closed, Stuck, Overflow };
+  // Samples A - B along face f's normal, keeps the least support value seen, and pushes f out
+  // unless it already lies on the boundary of A - B.
+  auto step = [&](int f) {
+    const EpaFace<S>& face = ws.faces[f];
     const SimplexVertexT<S> w = support(face.n);
     const S length = std::sqrt(face.nn);
     const S h = face.n.dot(w.w) / length;
-    const S face_distance = face.offset / length;
-    if (!(std::abs(h) <= std::numeric_limits<S>::max())) {
-      out.status = Status::InvalidInput;
-      return out;
-    }
+    if (!(std::abs(h) <= std::numeric_limits<S>::max())) return Step::Overflow;
     if (h < upper) {
       upper = h;
       upper_vertex = w;
       upper_normal = face.n / length;
     }
-    if (h - face_distance <= gain_tol) {  // the face lies on the boundary of A - B
-      converged = true;
-      break;
-    }
-    bool repeated = false;
-    for (int k = 0; k < 3; ++k) repeated |= ws.vertices[face.v[k]].w == w.w;
-    if (repeated) {  // w is a vertex of the face: h is its distance, to rounding
-      converged = true;
-      break;
-    }
+    if (h - face.offset / length <= gain_tol) return Step::Closed;
+    // w is a vertex of the face: h is its distance, to rounding.
+    for (int k = 0; k < 3; ++k)
+      if (ws.vertices[face.v[k]].w == w.w) return Step::Closed;
+    return expand_polytope(ws, f, w, flat_tol) ? Step::Expanded : Step::Stuck;
+  };
+  // The last quarter of the support calls is kept for the polish below.
+  const int global_budget = tol.max_iterations - tol.max_iterations / 4;
+  int best = ws.nearest();
+  Step last = Step::Expanded;
+  while (out.iterations < global_budget && (last = step(best)) == Step::Expanded)
+    best = ws.nearest();
+  if (last == Step::Overflow) {
+    out.status = Status::InvalidInput;
+    return out;
+  }
+  const bool converged = last == Step::Closed;
 
-    // Faces visible from w: a connected region grown from the nearest face. A neighbour that
-    // w does not see but that would meet the new faces at a reflex angle (w lies within rounding
-    // of its plane, on a curved core near convergence) is added to the region and the expansion
-    // tried again; only if that does not help is the expansion given up.
-    const int wi = static_cast<int>(ws.vertices.size());
-    ws.vertices.push_back(w);
-    ws.forced.clear();
-    bool valid = false;
-    for (int attempt = 0; attempt < kMaxExpansionAttempts; ++attempt) {
-      ws.removed.clear();
-      ws.horizon.clear();
-      ws.stack.clear();
-      ws.faces[best].live = false;
-      ws.removed.push_back(best);
-      ws.stack.push_back(best);
-      while (!ws.stack.empty()) {
-        const int f = ws.stack.back();
-        ws.stack.pop_back();
-        for (int e = 0; e < 3; ++e) {
-          const int g = ws.faces[f].adj[e];
-          if (!ws.faces[g].live) continue;
-          const bool forced = !ws.forced.empty() &&
-                              std::find(ws.forced.begin(), ws.forced.end(), g) != ws.forced.end();
-          if (forced || ws.faces[g].n.dot(w.w) - ws.faces[g].offset > S(0)) {
-            ws.faces[g].live = false;
-            ws.removed.push_back(g);
-            ws.stack.push_back(g);
-          } else {
-            ws.horizon.push_back({g, ws.faces[f].adj_edge[e]});
-          }
+  // 3. Polish. The bracket stays open when many normals are about as good: a circle of them
+  // around the axis of coaxial cones, cylinders or spheroids, where P would need refining all
+  // along the circle (thousands of faces) before its nearest face is within the tolerance. The
+  // answer is then the upper end, which only needs the least support value near one of those
+  // normals: descend on h from the best normal seen, along great circles. h is convex and
+  // positively homogeneous, its gradient the support point s, so along u(t) = cos t u + sin t v
+  // the slope is s(u(t)) . u'(t); bisecting on its sign finds the minimum on the circle also at
+  // a kink of h (a cone's rim, where its slope jumps). The upper end can only go down.
+  if (!converged && last != Step::Stuck) {
+    best = ws.nearest();
+    const S lower = ws.faces[best].distance();
+    while (out.iterations < tol.max_iterations) {
+      const Vec3T<S> u = upper_normal;
+      const Vec3T<S> gradient = upper_vertex.w - u.dot(upper_vertex.w) * u;  // tangential part
+      const S slope = gradient.norm();
+      if (!(slope > S(0))) break;
+      const Vec3T<S> v = -gradient / slope;
+      // The minimum on the circle is within t = 2 (upper - lower) / slope: at a kink h rises
+      // from there at the slope at least, on a smooth minimum the drop is at most that.
+      S lo = S(0), hi = std::min(S(2) * (upper - lower) / slope, S(0.5));
+      bool bracketed = false;
+      const S start = upper;
+      while (out.iterations < tol.max_iterations && (hi - lo) * slope > gain_tol) {
+        const S t = bracketed ? (lo + hi) / S(2) : hi;
+        const Vec3T<S> d = std::cos(t) * u + std::sin(t) * v;
+        const SimplexVertexT<S> w = support(d);
+        const S h = d.dot(w.w);
+        if (!(std::abs(h) <= std::numeric_limits<S>::max())) break;
+        if (h < upper) {
+          upper = h;
+          upper_vertex = w;
+          upper_normal = d;
+        }
+        if (w.w.dot(std::cos(t) * v - std::sin(t) * u) < S(0)) {  // still descending at t
+          lo = t;
+          if (!bracketed) hi = std::min(hi * S(4), S(1.5));
+          if (!bracketed && hi >= S(1.5)) break;
+        } else {
+          hi = t;
+          bracketed = true;
         }
       }
-      // New faces over the horizon, checked before anything is linked.
-      valid = ws.horizon.size() >= 3;
-      int reflex = -1;
-      ws.created.clear();
-      for (std::size_t h_i = 0; valid && h_i < ws.horizon.size(); ++h_i) {
-        const auto [g, k] = ws.horizon[h_i];
-        const int from = ws.faces[g].v[(k + 1) % 3], to = ws.faces[g].v[k];
-        const int far = ws.faces[g].v[(k + 2) % 3];
-        const int c = make_epa_face(ws, from, to, wi);
-        if (c < 0) {
-          // w lies on the line of the horizon edge, so in the plane of g: a flat face of A - B
-          // sampled at an interior point (the centre of a cylinder's cap) and then at two rim
-          // points on either side of it. Taking g into the region retriangulates that plane.
-          valid = false;
-          reflex = g;
-          break;
-        }
-        ws.created.push_back(c);
-        EpaFace<S>& created = ws.faces[c];
-        created.adj[0] = g;
-        created.adj_edge[0] = k;
-        // Convexity across the horizon edge: the neighbour's far vertex is below the new face.
-        // When it lies in the new face's plane (w is in g's plane: a flat facet of A - B sampled
-        // at several points), the two faces must also face the same way: opposite normals mean
-        // the new face folds back over g, and P would turn inside out there.
-        const S above = created.n.dot(ws.vertices[far].w) - created.offset;
-        const bool off_plane = above * above > flat_tol * flat_tol * created.nn;
-        if (off_plane ? above > S(0) : created.n.dot(ws.faces[g].n) < S(0)) {
-          valid = false;
-          reflex = g;
-          break;
-        }
-      }
-      // The horizon must be one simple loop: each new face's edge 1 (to -> w) meets exactly one
-      // other new face's edge 2 (w -> from), i.e. every horizon vertex starts exactly one new
-      // face. Found through a table from vertex to the new face that starts there: comparing
-      // all pairs cost about fifty mispredicted branches per query.
-      if (ws.starting_at.size() < ws.vertices.size()) ws.starting_at.resize(ws.vertices.size(), -1);
-      for (std::size_t c_i = 0; valid && c_i < ws.created.size(); ++c_i) {
-        int& slot = ws.starting_at[ws.faces[ws.created[c_i]].v[0]];
-        if (slot >= 0) valid = false;  // two new faces start at one vertex: not a simple loop
-        slot = ws.created[c_i];
-      }
-      for (std::size_t c_i = 0; valid && c_i < ws.created.size(); ++c_i) {
-        const int c = ws.created[c_i];
-        const int match = ws.starting_at[ws.faces[c].v[1]];
-        if (match < 0) {
-          valid = false;
-          break;
-        }
-        ws.faces[c].adj[1] = match;
-        ws.faces[c].adj_edge[1] = 2;
-        ws.faces[match].adj[2] = c;
-        ws.faces[match].adj_edge[2] = 1;
-      }
-      for (const int c : ws.created) ws.starting_at[ws.faces[c].v[0]] = -1;
-      if (valid) break;
-      // Undo this attempt: drop the new faces, revive the removed ones.
-      ws.faces.resize(ws.faces.size() - ws.created.size());
-      for (const int f : ws.removed) ws.faces[f].live = true;
-      if (reflex < 0) break;
-      ws.forced.push_back(reflex);
-    }
-    if (!valid) {
-      ws.vertices.pop_back();  // give up: stop with the bracket reached so far
-      break;
-    }
-    for (const int c : ws.created) {
-      const EpaFace<S>& created = ws.faces[c];
-      EpaFace<S>& neighbour = ws.faces[created.adj[0]];
-      neighbour.adj[created.adj_edge[0]] = c;
-      neighbour.adj_edge[created.adj_edge[0]] = 0;
-      ws.enqueue(c);
+      if (!(start - upper > gain_tol)) break;  // this circle gained nothing: a minimum
     }
   }
 
-  // 3. Witness points: the origin's projection p = d n in barycentric coordinates. p lies in the
+  // 4. Witness points: the origin's projection p = d n in barycentric coordinates. p lies in the
   // facet of A - B that the nearest face belongs to, but that facet may be split into several
   // coplanar faces of P (a box face, or the parallelogram of an edge of A and an edge of B, is two
   // triangles) and the heap may have surfaced a coplanar neighbour of the face holding p. So take,

@@ -463,8 +463,8 @@ TEST(ContactNasty, FlatBoxOnThinDisc) {
   // then repeated vertices of P until the cap, and the answer was 0.18 instead of 2.3e-8. The
   // first case is the one the curved-shape oracle found, to the last digit.
   const mink::Cylinder disc{0.19936074565939507, 0.0020954995931268842};
-  for (const Vec3 half : {Vec3(0, 0.25990005091321328, 0.23156408973381232),
-                          Vec3(0.25990005091321328, 0, 0.23156408973381232), Vec3(0, 0.1, 0.05)}) {
+  for (const Vec3& half : {Vec3(0, 0.25990005091321328, 0.23156408973381232),
+                           Vec3(0.25990005091321328, 0, 0.23156408973381232), Vec3(0, 0.1, 0.05)}) {
     const mink::Box box{half};
     const double size = std::hypot(disc.radius, disc.half_height) + half.norm();
     for (const double sink : {2.2791181472463226e-08, 1e-12, 1e-4, 1e-3}) {
@@ -480,28 +480,63 @@ TEST(ContactNasty, FlatBoxOnThinDisc) {
   }
 }
 
+/// Expects the depth of a pair whose best normals tie along a circle (coaxial shapes of
+/// revolution): EPA cannot close its bracket there, so the status may be the cap, but the depth
+/// must be exact, the error bound must cover the error, and moving B by the depth along the
+/// normal must separate the shapes.
+template <class A, class B>
+mink::ContactResult expect_tied_depth(const A& a, const Pose& pa, const B& b, const Pose& pb,
+                                      double depth, double size) {
+  const auto r = mink::contact(a, pa, b, pb);
+  EXPECT_TRUE(oracle::all_finite(r)) << oracle::describe(r);
+  EXPECT_TRUE(r.status == mink::Status::Intersecting || r.status == mink::Status::IterationLimit)
+      << oracle::describe(r);
+  EXPECT_TRUE(r.intersect);
+  EXPECT_NEAR(r.depth, depth, 1e-9 * size) << oracle::describe(r);
+  EXPECT_NEAR(r.normal.norm(), 1.0, 1e-12);
+  EXPECT_GE(r.error_bound, std::abs(r.depth - depth) - 1e-12 * size);
+  EXPECT_LE((r.point_b - r.point_a + r.depth * r.normal).norm(), 1e-9 * size);
+  Pose moved = pb;
+  moved.translation += r.normal * (r.depth + 1e-9 * size);
+  EXPECT_FALSE(mink::contact(a, pa, b, moved).depth > 1e-9 * size);
+  return r;
+}
+
 TEST(ContactNasty, CoaxialCylindersDeepSideways) {
   // B sunk so deep along the axis that sliding it out sideways is shorter: depth 2r along any
-  // radial direction. EPA cannot close its bracket on the curved side of A - B (every radial
-  // direction ties), so the answer is its best upper bound, which is exact here, with the
-  // iteration cap in the status; the normal must be radial and moving B by depth along it must
-  // separate the shapes.
+  // radial direction, so the normal must be radial.
   const mink::Cylinder cyl{1.0, 2.0};
   const double size = 2 * std::hypot(cyl.radius, cyl.half_height);
   for (const double z : {0.5, 1.0}) {
     SCOPED_TRACE(z);
-    const auto r = mink::contact(cyl, Pose::identity(), cyl, at(0, 0, z));
-    EXPECT_TRUE(oracle::all_finite(r)) << oracle::describe(r);
-    EXPECT_TRUE(r.intersect);
-    EXPECT_NEAR(r.depth, 2.0, 1e-9 * size) << oracle::describe(r);
-    EXPECT_NEAR(r.normal.norm(), 1.0, 1e-12);
+    const auto r = expect_tied_depth(cyl, Pose::identity(), cyl, at(0, 0, z), 2.0, size);
     EXPECT_LE(std::abs(r.normal.z()), 1e-9) << oracle::describe(r);
-    EXPECT_GE(r.error_bound, 0.0);
-    EXPECT_LE((r.point_b - r.point_a + r.depth * r.normal).norm(), 1e-9 * size);
-    const Pose moved = at(r.normal.x() * r.depth * (1 + 1e-9), r.normal.y() * r.depth * (1 + 1e-9),
-                          z + r.normal.z() * r.depth * (1 + 1e-9));
-    EXPECT_FALSE(mink::contact(cyl, Pose::identity(), cyl, moved).depth > 1e-9 * size);
   }
+}
+
+TEST(ContactNasty, CoaxialConesTie) {
+  // Coincident cones: A - B is symmetric and the depth is the cone's least width, the least
+  // altitude of its axial triangle (base 2r, height 2h). Its best normals form a circle across
+  // the slanted side, where h of A - B also has a kink. EPA's best upper bound after its cap was
+  // 4e-4 of the size too deep; the descent along great circles makes it exact.
+  const Pose turned = rotated(Vec3(3, -2, 5), 0.7, Vec3(1, 2, 3));
+  for (const auto& [r, h] : {std::pair{1.0, 1.0}, {0.5, 2.0}, {2.0, 0.3}, {1.0, 0.01}}) {
+    SCOPED_TRACE(testing::Message() << "cone r " << r << " h " << h);
+    const mink::Cone cone{r, h};
+    const double size = 2 * std::hypot(r, h);
+    const double width = std::min(2 * h, 4 * r * h / std::hypot(r, 2 * h));
+    expect_tied_depth(cone, Pose::identity(), cone, Pose::identity(), width, size);
+    expect_tied_depth(cone, turned, cone, turned, width, size);
+  }
+  // A capsule on the axis of a cone (apex up, half height 2, radius 1): the way out is across
+  // the slanted side, of outward normal (4, 0, 1) / sqrt(17) in any azimuth, where the cone
+  // reaches 2 / sqrt(17) and the capsule's core its lower end, 0.2 / sqrt(17) past the centre.
+  const mink::Cone cone{1.0, 2.0};
+  const mink::Capsule capsule{0.1, 0.2};
+  const double size = std::hypot(1.0, 2.0) + 0.3;
+  expect_tied_depth(capsule, Pose::identity(), cone, Pose::identity(), 0.1 + 2.2 / std::sqrt(17.0),
+                    size);
+  expect_tied_depth(cone, turned, capsule, turned, 0.1 + 2.2 / std::sqrt(17.0), size);
 }
 
 TEST(ContactNasty, CoresAlmostMeeting) {
