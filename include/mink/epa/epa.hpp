@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "mink/gjk/gjk.hpp"
+#include "mink/math/orthogonal.hpp"
 
 namespace mink::detail {
 
@@ -253,16 +254,6 @@ bool seed_polytope(EpaWorkspace<S>& ws) {
     ws.enqueue(ids[f]);
   }
   return true;
-}
-
-/// A direction orthogonal to the unit-free vector e (not normalised).
-template <class S>
-Vec3T<S> orthogonal(const Vec3T<S>& e) {
-  const Vec3T<S> abs = e.cwiseAbs();
-  const Vec3T<S> axis = abs.x() <= abs.y() && abs.x() <= abs.z()
-                            ? Vec3T<S>::UnitX()
-                            : (abs.y() <= abs.z() ? Vec3T<S>::UnitY() : Vec3T<S>::UnitZ());
-  return e.cross(axis);
 }
 
 /// Pushes `face` of P out to the support point w beyond it: removes the faces w sees (a
@@ -484,12 +475,11 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     if (!(best > flat_tol)) {
       // A - B is a segment: any direction orthogonal to it; prefer the line of centres'
       // component orthogonal to it, which separates concentric-looking pairs the expected way.
-      Vec3T<S> normal = fallback - e * (fallback.dot(e) / e.squaredNorm());
-      // Projected twice: when the line of centres runs nearly along the segment (a sphere's
-      // centre on a capsule's axis, off its middle), one projection leaves a component along it
-      // of eps / |what is left|, and every unit of it costs the segment's length in depth.
-      normal -= e * (normal.dot(e) / e.squaredNorm());
-      normal = normal.squaredNorm() > S(1e-24) ? Vec3T<S>(normal.normalized()) : u1;
+      // Projected out twice: when the line of centres runs nearly along the segment (a sphere's
+      // centre on a capsule's axis, off its middle), one projection leaves a component along it,
+      // and every unit of it costs the segment's length in depth.
+      Vec3T<S> normal = fallback;
+      if (!make_orthogonal(normal, e, e)) normal = u1;
       return degenerate(normal);
     }
     ws.vertices.push_back(best_vertex);
@@ -522,7 +512,8 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   // 2. Expand the face nearest the origin, until the bracket closes.
   S upper = std::numeric_limits<S>::infinity();
   Vec3T<S> upper_normal = Vec3T<S>::UnitZ();  // the direction of the least support value seen
-  SimplexVertexT<S> upper_vertex;             // and its support point
+  SimplexVertexT<S> upper_vertex{Vec3T<S>::Zero(), Vec3T<S>::Zero(), Vec3T<S>::Zero(),
+                                 Vec3T<S>::Zero()};  // and its support point
   enum class Step { Expanded, Closed, Stuck, Overflow };
   // Samples A - B along face f's normal, keeps the least support value seen, and pushes f out
   // unless it already lies on the boundary of A - B.
@@ -563,7 +554,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   // positively homogeneous, its gradient the support point s, so along u(t) = cos t u + sin t v
   // the slope is s(u(t)) . u'(t); bisecting on its sign finds the minimum on the circle also at
   // a kink of h (a cone's rim, where its slope jumps). The upper end can only go down.
-  if (!converged && last != Step::Stuck) {
+  if (!converged && upper < std::numeric_limits<S>::infinity()) {
     best = ws.nearest();
     const S lower = ws.faces[best].distance();
     while (out.iterations < tol.max_iterations) {
@@ -657,16 +648,18 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   out.normal = normal;
   out.depth = out.lower = depth;
   out.upper = std::max(depth, upper);
-  if (!converged && upper < std::numeric_limits<S>::infinity() && upper - depth > gain_tol) {
-    // Stopped with the bracket open (the cap, or an expansion that rounding would not allow):
-    // the nearest face is only a lower bound and its normal may be far from the answer, while
-    // moving B by h(n) along the normal n of the least support value h seen always separates
-    // the shapes. That is the estimate to give; `upper - depth` (error_bound) says how good.
+  if (!converged && upper < std::numeric_limits<S>::infinity()) {
+    // EPA did not close the bracket on a face (the cap, the polish, an expansion that rounding
+    // would not allow): the nearest face is only a lower bound, and its normal may be far from
+    // the answer even when the polish brought the upper end down to it, while moving B by h(n)
+    // along the normal n of the least support value h seen always separates the shapes. That is
+    // the answer; `upper - depth` (error_bound) says how good, and decides the status.
     out.normal = upper_normal;
-    out.depth = upper;
     out.a = upper_vertex.a;
     out.b = upper_vertex.a - upper * upper_normal;
-    if (out.status == Status::Intersecting) out.status = Status::IterationLimit;
+    if (upper - depth > gain_tol && out.status == Status::Intersecting)
+      out.status = Status::IterationLimit;
+    out.depth = upper;
   }
   return out;
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "mink/math/orthogonal.hpp"
 #include "mink/math/pose.hpp"
 #include "mink/shapes/capsule.hpp"
 #include "mink/shapes/point.hpp"
@@ -137,24 +138,12 @@ template <class S>
 template <class S>
 Vec3T<S> segment_gap_direction(const CoreSegment<S>& p, const CoreSegment<S>& q, S u, S v,
                                const Vec3T<S>& gap) {
-  const S pp = p.half.squaredNorm(), qq = q.half.squaredNorm();
-  const bool across_p = pp > S(0) && std::abs(u) < S(1);
-  const bool across_q = qq > S(0) && std::abs(v) < S(1);
+  const bool across_p = std::abs(u) < S(1), across_q = std::abs(v) < S(1);
   Vec3T<S> n = gap;
-  const Vec3T<S> both = p.half.cross(q.half);
-  const S bb = both.squaredNorm();
-  if (across_p && across_q && bb > S(1e-8) * pp * qq) {
-    // Orthogonal to both segments (they are 1e-4 rad or more from parallel): their cross product,
-    // the side of `gap`.
-    n = both.dot(gap) >= S(0) ? both : Vec3T<S>(-both);
-  } else {
-    if (across_p) n -= p.half * (n.dot(p.half) / pp);
-    if (across_q) n -= q.half * (n.dot(q.half) / qq);
-  }
-  const S length = n.norm();
-  // A projection that leaves (nearly) nothing: the gap is rounding only; keep its direction.
-  if (!(length > S(1e-3) * gap.norm())) return gap.normalized();
-  return n / length;
+  if (!make_orthogonal(n, across_p ? p.half : Vec3T<S>::Zero(),
+                       across_q ? q.half : Vec3T<S>::Zero()))
+    n = gap.normalized();  // the gap is rounding only: keep its direction
+  return n;
 }
 
 /// The same for segments given by their end points p0-p1 and q0-q1.

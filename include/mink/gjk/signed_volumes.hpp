@@ -23,6 +23,7 @@
 #include <limits>
 
 #include "mink/gjk/simplex.hpp"
+#include "mink/math/orthogonal.hpp"
 
 namespace mink::detail {
 
@@ -245,27 +246,20 @@ template <class S>
 /// the feature's extent times the tilt (a sphere centre 1e-10 above a rounded box's core face).
 /// But the closest point is interior to the reduced simplex, so -v is exactly orthogonal to it:
 /// a segment's direction is projected out, and a triangle's normal comes from its edges' cross
-/// product (when the triangle is not a sliver, sine of its angles above 0.01).
+/// product (make_orthogonal).
 template <class S>
 Vec3T<S> separation_direction(const SimplexT<S>& simplex, const Vec3T<S>& v) {
   const S length_v = v.norm();
   if (!(length_v > S(0))) return Vec3T<S>::UnitZ();  // no simplex: any unit vector
   Vec3T<S> n = -v;
-  if (simplex.size == 2) {
-    const Vec3T<S> t = simplex.vertices[1].w - simplex.vertices[0].w;
-    const S tt = t.squaredNorm();
-    if (tt > S(0)) n -= t * (n.dot(t) / tt);
-  } else if (simplex.size == 3) {
-    const Vec3T<S> e1 = simplex.vertices[1].w - simplex.vertices[0].w;
-    const Vec3T<S> e2 = simplex.vertices[2].w - simplex.vertices[0].w;
-    const Vec3T<S> c = e1.cross(e2);
-    if (c.squaredNorm() > S(1e-4) * e1.squaredNorm() * e2.squaredNorm())
-      n = c.dot(v) <= S(0) ? c : Vec3T<S>(-c);
-  }
-  const S length = n.norm();
+  const Vec3T<S> zero = Vec3T<S>::Zero();
+  const Vec3T<S> e1 =
+      simplex.size >= 2 ? Vec3T<S>(simplex.vertices[1].w - simplex.vertices[0].w) : zero;
+  const Vec3T<S> e2 =
+      simplex.size >= 3 ? Vec3T<S>(simplex.vertices[2].w - simplex.vertices[0].w) : zero;
   // Nothing left but rounding (v was rounding itself): keep -v.
-  if (!(length > S(1e-3) * length_v)) return -v / length_v;
-  return n / length;
+  if (simplex.size == 4 || !make_orthogonal(n, e1, e2)) n = -v / length_v;
+  return n;
 }
 
 /// Writes to `out` the smallest sub-simplex of `in` whose hull holds the point of `in` closest to
