@@ -552,24 +552,51 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   // answer is then the upper end, which only needs the least support value near one of those
   // normals: descend on h from the best normal seen, along great circles. h is convex and
   // positively homogeneous, its gradient the support point s, so along u(t) = cos t u + sin t v
-  // the slope is s(u(t)) . u'(t); bisecting on its sign finds the minimum on the circle also at
-  // a kink of h (a cone's rim, where its slope jumps). The upper end can only go down.
+  // the slope is s(u(t)) . u'(t). The minimum on a circle is bracketed by the sign of the slope
+  // and found where the support planes of the bracket's ends cross (safeguarded by bisection),
+  // which is exact at a kink of h (a cone's rim, where its slope jumps). At a kink the next
+  // circle follows the valley: its direction is minus the least combination of the gradients on
+  // either side (a bundle of two), not the one-sided gradient, which would only zigzag across.
+  // The upper end can only go down.
   if (!converged && upper < std::numeric_limits<S>::infinity()) {
     best = ws.nearest();
     const S lower = ws.faces[best].distance();
+    bool have_other = false;  // a support point across the kink the last circle ended at
+    Vec3T<S> other = Vec3T<S>::Zero();
     while (out.iterations < tol.max_iterations) {
       const Vec3T<S> u = upper_normal;
-      const Vec3T<S> gradient = upper_vertex.w - u.dot(upper_vertex.w) * u;  // tangential part
+      Vec3T<S> gradient = upper_vertex.w - u.dot(upper_vertex.w) * u;  // tangential part
+      if (have_other) {
+        const Vec3T<S> across = other - u.dot(other) * u - gradient;
+        const S aa = across.squaredNorm();
+        if (aa > S(0)) gradient += std::clamp(-gradient.dot(across) / aa, S(0), S(1)) * across;
+      }
       const S slope = gradient.norm();
       if (!(slope > S(0))) break;
       const Vec3T<S> v = -gradient / slope;
       // The minimum on the circle is within t = 2 (upper - lower) / slope: at a kink h rises
       // from there at the slope at least, on a smooth minimum the drop is at most that.
       S lo = S(0), hi = std::min(S(2) * (upper - lower) / slope, S(0.5));
+      Vec3T<S> s_lo = upper_vertex.w, s_hi = Vec3T<S>::Zero();
+      S slope_lo = -slope, slope_hi = S(0);
       bool bracketed = false;
+      int trials = 0;
       const S start = upper;
       while (out.iterations < tol.max_iterations && (hi - lo) * slope > gain_tol) {
-        const S t = bracketed ? (lo + hi) / S(2) : hi;
+        S t = hi;
+        if (bracketed) {
+          // Alternately where the planes of s_lo and s_hi cross, (s_lo - s_hi) . u(t) = 0, exact
+          // at a kink, and where the slope's secant is zero, fast on a smooth minimum; bisection
+          // when either falls near an end.
+          if (++trials % 2) {
+            const Vec3T<S> jump = s_lo - s_hi;
+            t = std::atan2(-jump.dot(u), jump.dot(v));
+          } else {
+            t = lo + (hi - lo) * (-slope_lo / (slope_hi - slope_lo));
+          }
+          const S margin = (hi - lo) / S(16);
+          if (!(t > lo + margin && t < hi - margin)) t = (lo + hi) / S(2);
+        }
         const Vec3T<S> d = std::cos(t) * u + std::sin(t) * v;
         const SimplexVertexT<S> w = support(d);
         const S h = d.dot(w.w);
@@ -579,15 +606,23 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
           upper_vertex = w;
           upper_normal = d;
         }
-        if (w.w.dot(std::cos(t) * v - std::sin(t) * u) < S(0)) {  // still descending at t
+        const S slope_t = w.w.dot(std::cos(t) * v - std::sin(t) * u);
+        if (slope_t < S(0)) {  // still descending at t
           lo = t;
+          s_lo = w.w;
+          slope_lo = slope_t;
           if (!bracketed) hi = std::min(hi * S(4), S(1.5));
           if (!bracketed && hi >= S(1.5)) break;
         } else {
           hi = t;
+          s_hi = w.w;
+          slope_hi = slope_t;
           bracketed = true;
         }
       }
+      // The bracket's end that is not the best point lies across the minimum from it.
+      have_other = bracketed;
+      other = upper_vertex.w == s_hi ? s_lo : s_hi;
       if (!(start - upper > gain_tol)) break;  // this circle gained nothing: a minimum
     }
   }
