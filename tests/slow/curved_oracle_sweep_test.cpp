@@ -17,6 +17,20 @@
 // about 2.5 minutes with the oracle's own tests). Before the sweep, the oracle is checked against
 // closed forms (tests/oracle/penetration.hpp and a few derived here), sampled surfaces, and for
 // symmetry and invariance, so that a disagreement is mink's.
+//
+// A second sweep (DistanceMatchesOracle) runs distance() and contact() on the same pairs and
+// configurations pulled apart: each penetrating case of the generator has B moved along the line
+// of centres, the oracle's normal, an axis of A or a random direction until the oracle's gap is
+// 1e-9 to 1 of the size (log-uniform) or 0 (touching, within 2.5e-13 of the size: a sixth of the
+// cases), by Newton's method on the oracle's depth as a function of the shift. A result passes
+// when its distance (contact(): distance minus depth) is within 1e-9 of the size of the oracle's,
+// its normal is unit and optimal (h_{A-B}(normal) + oracle distance <= 1e-9 of the size), point_a
+// and point_b lie on their shapes and on the support planes along +-normal, and
+// point_b - point_a = distance * normal, all within 1e-9 of the size; the status must be
+// separated, or intersecting when the oracle's gap is within mink's touching tolerance (1e-12 of
+// the size). Flagged and silent as above. It takes about 3 full oracle searches per case: the
+// default, 1 case per ordered pair and configuration (252), about 5 s; MINK_SWEEP_SCALE
+// multiplies it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -751,6 +765,466 @@ TEST(CurvedOracleSweep, ContactMatchesOracle) {
   }
   row("all", total);
   std::printf("\n");
+}
+
+// ---- The distance sweep ----
+
+mink::DistanceResult run_distance(const CurvedShape& a, const Pose& pa, const CurvedShape& b,
+                                  const Pose& pb) {
+  return with_mink_shape(a, [&](const auto& ma) {
+    return with_mink_shape(b, [&](const auto& mb) { return mink::distance(ma, pa, mb, pb); });
+  });
+}
+
+/// Distance from a world point to the posed shape (0 inside), in long double, from the shape's
+/// definition: spheres, boxes and capsules by clamping; cylinders and cones as a rectangle and a
+/// triangle in the (radial, axial) half-plane, which their symmetry about the axis makes exact;
+/// ellipsoids by bisection on the multiplier t of the nearest point, x_i e_i^2 / (e_i^2 + t).
+Real distance_to_shape(const CurvedShape& s, const Pose& pose, const V3& world) {
+  const V3 x = widen(pose.rotation).transpose() * (world - widen(pose.translation));
+  const Real r = s.radius, h = s.half_height, zero = 0;
+  const Real rho = std::hypot(x.x(), x.y()), z = x.z();
+  // Distance from (rho, z) to the segment from (r0, z0) to (r1, z1) of the half-plane.
+  auto segment = [&](Real r0, Real z0, Real r1, Real z1) {
+    const Real dr = r1 - r0, dz = z1 - z0, len2 = dr * dr + dz * dz;
+    const Real t =
+        len2 > 0 ? std::clamp(((rho - r0) * dr + (z - z0) * dz) / len2, zero, Real(1)) : zero;
+    return std::hypot(rho - r0 - t * dr, z - z0 - t * dz);
+  };
+  switch (s.kind) {
+    case CurvedKind::Sphere:
+      return std::max(zero, x.norm() - r);
+    case CurvedKind::Box:
+      return (x.cwiseAbs() - s.extents).cwiseMax(zero).norm();
+    case CurvedKind::Capsule:
+      return std::max(zero, (x - V3(0, 0, std::clamp(z, -h, h))).norm() - r);
+    case CurvedKind::Cylinder:
+      return std::hypot(std::max(zero, rho - r), std::max(zero, std::abs(z) - h));
+    case CurvedKind::Cone:  // the triangle (0, -h), (r, -h), (0, h)
+      if (h > 0 && z >= -h && 2 * h * rho <= r * (h - z)) return 0;
+      return std::min({segment(0, -h, r, -h), segment(r, -h, 0, h), segment(0, -h, 0, h)});
+    case CurvedKind::Ellipsoid: {
+      const V3& e = s.extents;
+      if (x.cwiseQuotient(e).squaredNorm() <= 1) return 0;
+      // sum (e_i x_i / (e_i^2 + t))^2 falls from above 1 at t = 0 to at most 1 at t = max e |x|.
+      auto level = [&](Real t) {
+        Real sum = 0;
+        for (int i = 0; i < 3; ++i) sum += std::pow(e[i] * x[i] / (e[i] * e[i] + t), 2);
+        return sum;
+      };
+      Real lo = 0, hi = e.maxCoeff() * x.norm();
+      for (int i = 0; i < 400; ++i) {
+        const Real mid = (lo + hi) / 2;
+        if (!(mid > lo && mid < hi)) break;
+        (level(mid) > 1 ? lo : hi) = mid;
+      }
+      V3 nearest;
+      for (int i = 0; i < 3; ++i) nearest[i] = e[i] * e[i] * x[i] / (e[i] * e[i] + hi);
+      return (x - nearest).norm();
+    }
+  }
+  return 0;
+}
+
+TEST(CurvedOracle, PointDistancesMatchSearch) {
+  // distance_to_shape against the oracle's search with B a point (a sphere of radius 0): minus its
+  // depth is the distance of the point when apart, and 0 inside. Points around every kind, thin
+  // ones included, up to twice its bounding radius from its centre, to 1e-13 of that radius.
+  const std::uint64_t base = 460000;
+  for (int i = 0; i < 60; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const CurvedShape s = random_shape(kKinds[i % 6], rng, i % 12 >= 6);
+    const Pose pose = rng.pose(2);
+    const double radius = double(oracle::bounding_radius(s));
+    const Vec3 at = pose.translation + rng.in_ball(2 * radius);
+    const CurvedShape point = make_shape(CurvedKind::Sphere, 0, 0, Vec3::Zero());
+    const Real depth =
+        oracle::curved_depth(s, rigid(pose), point, rigid(Pose::from_translation(at))).depth;
+    EXPECT_NEAR(double(distance_to_shape(s, pose, widen(at))), double(std::max(Real(0), -depth)),
+                1e-13 * radius)
+        << describe_shape(s) << " at " << describe_pose(pose);
+  }
+}
+
+/// A case of the contact sweep's generator with B moved along `direction` by `shift` until the
+/// oracle's gap (minus its depth) is `target`.
+struct Placement {
+  Case c;                        ///< the final poses (B's translation rounded to double)
+  oracle::CurvedDepth expected;  ///< the oracle at exactly those poses
+  Vec3 direction = Vec3::UnitZ();
+  const char* direction_name = "";
+  Real shift = 0;         ///< B's translation minus the generator's, along direction
+  double target = 0;      ///< the gap aimed at (0: touching)
+  int band = 0;           ///< index into kBandNames, from the target
+  bool on_target = true;  ///< the gap reached is within 1e-3 of the target, relative
+                          ///< (touching: 2.5e-13 of the size)
+  int oracle_calls = 0;   ///< full oracle searches spent (local refinements not counted)
+};
+
+constexpr int kBands = 6;
+constexpr std::array<const char*, kBands> kBandNames = {
+    "touching (0)", "1e-9 .. 1e-7", "1e-7 .. 1e-5", "1e-5 .. 1e-3", "1e-3 .. 1e-1", "1e-1 .. 1"};
+
+/// B's pose moved by t along d (rounded to double once).
+Pose shifted(const Pose& p, const Vec3& d, Real t) {
+  Pose q = p;
+  q.translation = (widen(p.translation) + t * widen(d)).cast<double>();
+  return q;
+}
+
+/// Moves B along the unit direction until the oracle's depth is -target. The depth as a function
+/// of the shift t, g(t) = min over u of h_{A-B}(u) - t d.u, is concave (a minimum of affine
+/// functions) and falls without bound; beyond its largest root it falls strictly, so Newton's
+/// steps t += (g + target) / d.u, started right of that root (at h_{A-B}(d) + target, where u = d
+/// alone proves g <= -target), approach it from the right. With g(0) > 0 (the case penetrates)
+/// there is no other root. The steps take the oracle's pattern search from the last minimiser; a
+/// full search then checks the result and, if it finds a lower minimum, Newton goes on from it (at
+/// most 4 full searches).
+void place(Placement& p, const Vec3& d, double target) {
+  using oracle::curved_detail::Probe;
+  const Pose start = p.c.pose_b;
+  const RigidPose pose_a = rigid(p.c.pose_a);
+  const Real size = size_of(p.c.a, p.c.b);
+  const Real want = target;
+  const Real close = target > 0 ? Real(1e-3) * want : Real(2.5e-13) * size;
+  const V3 dl = widen(d);
+  const Real spacing = oracle::curved_detail::Grid::get().spacing;
+  p.direction = d;
+  p.target = target;
+  Real t = oracle::DifferenceSupport(p.c.a, pose_a, p.c.b, rigid(start))(dl) + want;
+  for (int search = 0;; ++search) {
+    p.c.pose_b = shifted(start, d, t);
+    p.expected = oracle::curved_depth(p.c.a, pose_a, p.c.b, rigid(p.c.pose_b));
+    ++p.oracle_calls;
+    p.shift = t;
+    p.on_target = std::abs(p.expected.depth + want) <= close;
+    if (p.on_target || search == 3) return;
+    Probe probe{p.expected.normal, p.expected.depth};
+    for (int step = 0; step < 40 && std::abs(probe.value + want) > close; ++step) {
+      const Real slope = dl.dot(probe.u);
+      if (!(slope > Real(1e-6))) break;  // not right of the root: let the full search decide
+      t += (probe.value + want) / slope;
+      const RigidPose pose_b = rigid(shifted(start, d, t));
+      const oracle::DifferenceSupport f(p.c.a, pose_a, p.c.b, pose_b);
+      const Real scale = (pose_a.translation - pose_b.translation).norm() + size;
+      long evaluations = 0;
+      probe = oracle::curved_detail::refine(f, f.axes(), {probe.u, f(probe.u)}, 2 * spacing,
+                                            2 * spacing, oracle::curved_detail::kFineStep, scale,
+                                            evaluations);
+    }
+  }
+}
+
+/// A separated or touching case: the contact sweep's case, redrawn like there until it
+/// penetrates (so that B's path below crosses every gap exactly once), then B moved away along the
+/// line of centres (40%), the oracle's normal there (20%), one of A's axes (20%; towards B) or a
+/// random direction (20%), to a gap of 0 (a sixth of the cases) or 1e-9 to 1 of the size,
+/// log-uniform. False when 5 draws do not penetrate.
+bool make_separated_case(Config config, CurvedKind ka, CurvedKind kb, Rng& rng, Placement& p,
+                         int& redrawn) {
+  oracle::CurvedDepth start;
+  for (int draw = 0;; ++draw) {
+    if (draw == 5) return false;
+    p.c = make_case(config, ka, kb, rng);
+    start = oracle::curved_depth(p.c.a, rigid(p.c.pose_a), p.c.b, rigid(p.c.pose_b));
+    ++p.oracle_calls;
+    if (penetrating(p.c, start)) break;
+    ++redrawn;
+  }
+  const Vec3 centres = p.c.pose_b.translation - p.c.pose_a.translation;
+  const double size = double(size_of(p.c.a, p.c.b));
+  const double pick = rng.uniform(0, 1);
+  Vec3 d;
+  if (pick < 0.4 && centres.norm() > 1e-6 * size) {
+    d = centres.normalized();
+    p.direction_name = "line of centres";
+  } else if (pick < 0.6) {
+    d = start.normal.cast<double>().normalized();
+    p.direction_name = "the oracle's normal at the start";
+  } else if (pick < 0.8) {
+    d = p.c.pose_a.rotation.col(rng.integer(0, 2));
+    if (d.dot(centres) < 0 || (d.dot(centres) == 0 && rng.chance(0.5))) d = -d;
+    p.direction_name = "an axis of A";
+  } else {
+    d = rng.unit();
+    p.direction_name = "a random direction";
+  }
+  const bool touching = rng.chance(1.0 / 6);
+  const double target = touching ? 0.0 : size * rng.log_uniform(1e-9, 1);
+  p.band = touching
+               ? 0
+               : std::clamp(1 + static_cast<int>(std::floor((std::log10(target / size) + 9) / 2)),
+                            1, kBands - 1);
+  place(p, d, target);
+  return true;
+}
+
+double signed_distance(const mink::DistanceResult& r) {
+  return r.distance;
+}
+double signed_distance(const mink::ContactResult& r) {
+  return r.distance - r.depth;
+}
+
+bool all_finite(const mink::DistanceResult& r) {
+  return std::isfinite(r.distance) && r.normal.allFinite() && r.point_a.allFinite() &&
+         r.point_b.allFinite() && std::isfinite(r.error_bound);
+}
+bool all_finite(const mink::ContactResult& r) {
+  return oracle::all_finite(r);
+}
+
+/// distance() leaves the normal and the points zero when it says Intersecting (touching here).
+bool has_normal(const mink::DistanceResult& r) {
+  return r.status != mink::Status::Intersecting;
+}
+bool has_normal(const mink::ContactResult&) {
+  return true;
+}
+
+std::string describe(const mink::DistanceResult& r) {
+  char buffer[640];
+  std::snprintf(buffer, sizeof buffer,
+                "status %s, intersect %d, distance %.17g, normal (%.17g, %.17g, %.17g), point_a "
+                "(%.17g, %.17g, %.17g), point_b (%.17g, %.17g, %.17g), error_bound %.3g, "
+                "iterations %d",
+                mink::to_string(r.status), int(r.intersect), r.distance, r.normal.x(), r.normal.y(),
+                r.normal.z(), r.point_a.x(), r.point_a.y(), r.point_a.z(), r.point_b.x(),
+                r.point_b.y(), r.point_b.z(), r.error_bound, r.iterations);
+  return buffer;
+}
+std::string describe(const mink::ContactResult& r) {
+  return "intersect " + std::to_string(int(r.intersect)) + ", " + oracle::describe(r);
+}
+
+/// Errors of one result, absolute (unit: length) except `unit`. Those of the normal and the points
+/// are 0 when the result has none.
+struct DistanceErrors {
+  double distance = 0;    ///< |distance (minus depth) - oracle distance|
+  double optimality = 0;  ///< h_{A-B}(normal) + oracle distance: 0 for an optimal normal
+  double support = 0;     ///< the points off A's support plane along the normal, B's along -normal
+  double inside = 0;      ///< the points' distances to their shapes
+  double points = 0;      ///< |point_b - point_a - distance normal|
+  double unit = 0;        ///< ||normal| - 1|
+  double max() const { return std::max({distance, optimality, support, inside, points}); }
+};
+
+struct QueryTally {
+  int pass = 0, flagged = 0, flagged_off = 0, silent = 0, bound_short = 0, oracle_miss = 0;
+  int touching_intersecting = 0;  ///< touching cases reported as intersecting (allowed)
+  double worst_pass = 0;          ///< largest error / size among passing cases
+  double worst_flagged = 0;
+  std::string worst_flagged_account;
+  int failures() const { return silent + bound_short + oracle_miss; }
+};
+
+struct DistanceTally {
+  int cases = 0, touching = 0, off_target = 0, oracle_calls = 0;
+  int skipped = 0, redrawn = 0;  ///< as in the contact sweep
+  QueryTally distance, contact;
+};
+
+/// Full-precision account of one case and one result.
+std::string distance_account(const Placement& p, const std::string& result, const DistanceErrors& e,
+                             double size) {
+  char buffer[1024];
+  std::snprintf(
+      buffer, sizeof buffer,
+      "\n    B moved along %s (%.17g, %.17g, %.17g) by %.17g from the generator's pose; gap "
+      "wanted %.17g"
+      "\n    oracle distance %.17g normal (%.17g, %.17g, %.17g); size %.17g"
+      "\n    errors / size: distance %.3g, h_{A-B}(normal) + oracle distance %.3g, support "
+      "planes %.3g, points off their shapes %.3g, |point_b - point_a - distance normal| %.3g; "
+      "||normal| - 1| %.3g"
+      "\n    mink: ",
+      p.direction_name, p.direction.x(), p.direction.y(), p.direction.z(), double(p.shift),
+      p.target, double(-p.expected.depth), double(p.expected.normal.x()),
+      double(p.expected.normal.y()), double(p.expected.normal.z()), size, e.distance / size,
+      e.optimality / size, e.support / size, e.inside / size, e.points / size, e.unit);
+  return "\n    " + reproduction(p.c) + buffer + result;
+}
+
+/// Judges a distance() or contact() result on a separated or touching case: the distance (for
+/// contact(), distance minus depth) within 1e-9 of the size of the oracle's; the normal optimal,
+/// h_{A-B}(normal) <= -oracle distance + 1e-9 size, and unit to 1e-12; point_a and point_b on
+/// their shapes (within 1e-9 size of them, and of the support planes along +-normal) and
+/// point_b - point_a = distance * normal. Status Separated, or Intersecting when the oracle's gap
+/// is within mink's touching tolerance, 1e-12 of the size (plus the rounding of the positions).
+/// Returns whether it failed.
+template <class R>
+bool judge_query(const Placement& p, const R& r, const std::string& label, QueryTally& tally) {
+  const Case& c = p.c;
+  const Real size_l = size_of(c.a, c.b);
+  const double size = double(size_l), tol = 1e-9 * size;
+  const Real oracle_distance = -p.expected.depth;
+  const double position = std::max(c.pose_a.translation.cwiseAbs().maxCoeff(),
+                                   c.pose_b.translation.cwiseAbs().maxCoeff());
+  const bool may_touch = oracle_distance <= Real(1e-12) * size_l + Real(1e-15) * position;
+  const bool finite = all_finite(r);
+  DistanceErrors e;
+  const double s = signed_distance(r);
+  e.distance = finite ? std::abs(double(Real(s) - oracle_distance)) : INFINITY;
+  Real h_normal = 0;
+  const bool normal = finite && has_normal(r);
+  if (normal) {
+    const V3 n = widen(r.normal), pa = widen(r.point_a), pb = widen(r.point_b);
+    const RigidPose rigid_a = rigid(c.pose_a), rigid_b = rigid(c.pose_b);
+    h_normal = difference_support(c.a, c.pose_a, c.b, c.pose_b, n);
+    e.optimality = double(h_normal - p.expected.depth);
+    e.support = double(std::max(std::abs(n.dot(pa) - oracle::world_support(c.a, rigid_a, n)),
+                                std::abs(n.dot(pb) + oracle::world_support(c.b, rigid_b, -n))));
+    e.inside = double(
+        std::max(distance_to_shape(c.a, c.pose_a, pa), distance_to_shape(c.b, c.pose_b, pb)));
+    e.points = double((pb - pa - Real(s) * n).norm());
+    e.unit = double(std::abs(n.norm() - 1));
+  }
+  const bool unit = e.unit <= 1e-12;
+  const double error = finite ? e.max() : INFINITY;
+  // A normal below the oracle's minimum means the oracle's search missed: a bug of the test.
+  if (normal && h_normal < p.expected.depth - Real(1e-13) * size_l) {
+    ++tally.oracle_miss;
+    ADD_FAILURE() << label << ": the oracle missed its minimum (mink's normal gives "
+                  << double(h_normal) << ")" << distance_account(p, describe(r), e, size);
+    return true;
+  }
+  if (r.status == mink::Status::IterationLimit) {
+    if (finite && unit && error <= r.error_bound + tol) {
+      ++tally.flagged;
+      if (error > tol) ++tally.flagged_off;
+      if (error / size >= tally.worst_flagged) {
+        tally.worst_flagged = error / size;
+        tally.worst_flagged_account = label + distance_account(p, describe(r), e, size);
+      }
+      return false;
+    }
+    ++tally.bound_short;
+    ADD_FAILURE() << label << ": iteration_limit, but error_bound does not cover the error"
+                  << distance_account(p, describe(r), e, size);
+    return true;
+  }
+  const bool status = (r.status == mink::Status::Separated && !r.intersect) ||
+                      (r.status == mink::Status::Intersecting && r.intersect && may_touch);
+  if (status && finite && unit && error <= tol) {
+    ++tally.pass;
+    if (r.status == mink::Status::Intersecting) ++tally.touching_intersecting;
+    tally.worst_pass = std::max(tally.worst_pass, error / size);
+    return false;
+  }
+  ++tally.silent;
+  ADD_FAILURE() << label << ": silent failure (status " << mink::to_string(r.status) << ")"
+                << distance_account(p, describe(r), e, size);
+  return true;
+}
+
+TEST(CurvedOracleSweep, DistanceMatchesOracle) {
+  const std::uint64_t base = 6000000;
+  const int per_pair = sweep_count(1);
+  std::printf(
+      "[ sweep    ] base seed %llu; case seed = base + 100000 config + 1000 pair + index; "
+      "%d cases per ordered pair and configuration\n",
+      static_cast<unsigned long long>(base), per_pair);
+  std::array<DistanceTally, kConfigs> tallies;
+  struct BandTally {
+    int cases = 0, distance_pass = 0, distance_flagged = 0, distance_failed = 0;
+    int contact_pass = 0, contact_flagged = 0, contact_failed = 0;
+  };
+  std::array<BandTally, kBands> bands;
+  for (int config = 0; config < kConfigs; ++config) {
+    DistanceTally& tally = tallies[config];
+    for (int pair = 0; pair < 36; ++pair)
+      for (int i = 0; i < per_pair; ++i) {
+        const std::uint64_t seed = base + 100000 * config + 1000 * pair + i;
+        Rng rng(seed);
+        Placement p;
+        const bool made = make_separated_case(static_cast<Config>(config), kKinds[pair / 6],
+                                              kKinds[pair % 6], rng, p, tally.redrawn);
+        tally.oracle_calls += p.oracle_calls;
+        if (!made) {
+          ++tally.skipped;
+          continue;
+        }
+        const Real size = size_of(p.c.a, p.c.b);
+        ++tally.cases;
+        if (std::abs(p.expected.depth) <= Real(1e-12) * size) ++tally.touching;
+        if (!p.on_target) {
+          ++tally.off_target;
+          std::printf("[ off      ] %s, %s - %s, %s: gap wanted %.3g, reached %.3g (of the size)\n",
+                      kConfigNames[config], oracle::kind_name(p.c.a.kind),
+                      oracle::kind_name(p.c.b.kind), oracle::seed_note(seed).c_str(),
+                      p.target / double(size), double(-p.expected.depth / size));
+        }
+        const std::string label = std::string(kConfigNames[config]) + ", " +
+                                  oracle::kind_name(p.c.a.kind) + " - " +
+                                  oracle::kind_name(p.c.b.kind) + ", " + oracle::seed_note(seed);
+        BandTally& band = bands[p.band];
+        ++band.cases;
+        const int distance_flagged = tally.distance.flagged,
+                  contact_flagged = tally.contact.flagged;
+        if (judge_query(p, run_distance(p.c.a, p.c.pose_a, p.c.b, p.c.pose_b),
+                        label + ", distance()", tally.distance))
+          ++band.distance_failed;
+        else if (tally.distance.flagged > distance_flagged)
+          ++band.distance_flagged;
+        else
+          ++band.distance_pass;
+        if (judge_query(p, run_contact(p.c.a, p.c.pose_a, p.c.b, p.c.pose_b), label + ", contact()",
+                        tally.contact))
+          ++band.contact_failed;
+        else if (tally.contact.flagged > contact_flagged)
+          ++band.contact_flagged;
+        else
+          ++band.contact_pass;
+      }
+    for (const auto& [name, q] :
+         {std::pair<const char*, const QueryTally&>{"distance()", tally.distance},
+          {"contact()", tally.contact}})
+      if (q.flagged > 0)
+        std::printf("[ flagged  ] %s, the worst of %d (%.3g of the size): %s\n", name, q.flagged,
+                    q.worst_flagged, q.worst_flagged_account.c_str());
+  }
+  auto table = [&](const char* query, QueryTally DistanceTally::*member) {
+    std::printf(
+        "\n%s\n| configuration | cases | touching | off target | pass | touching, intersecting | "
+        "flagged | flagged, off | silent | bound short | oracle miss | skipped | redrawn | worst "
+        "pass |\n"
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+        query);
+    auto row = [](const char* name, const DistanceTally& t, const QueryTally& q) {
+      std::printf("| %s | %d | %d | %d | %d | %d | %d | %d | %d | %d | %d | %d | %d | %.2g |\n",
+                  name, t.cases, t.touching, t.off_target, q.pass, q.touching_intersecting,
+                  q.flagged, q.flagged_off, q.silent, q.bound_short, q.oracle_miss, t.skipped,
+                  t.redrawn, q.worst_pass);
+    };
+    DistanceTally total;
+    QueryTally& all = total.*member;
+    for (int config = 0; config < kConfigs; ++config) {
+      const DistanceTally& t = tallies[config];
+      const QueryTally& q = t.*member;
+      row(kConfigNames[config], t, q);
+      total.cases += t.cases, total.touching += t.touching, total.off_target += t.off_target;
+      total.skipped += t.skipped, total.redrawn += t.redrawn;
+      all.pass += q.pass, all.touching_intersecting += q.touching_intersecting;
+      all.flagged += q.flagged, all.flagged_off += q.flagged_off, all.silent += q.silent;
+      all.bound_short += q.bound_short, all.oracle_miss += q.oracle_miss;
+      all.worst_pass = std::max(all.worst_pass, q.worst_pass);
+    }
+    row("all", total, all);
+  };
+  table("distance()", &DistanceTally::distance);
+  table("contact()", &DistanceTally::contact);
+  std::printf(
+      "\nby the gap wanted, relative to the size\n| gap / size | cases | distance(): pass | "
+      "flagged | failed | contact(): pass | flagged | failed |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (int b = 0; b < kBands; ++b)
+    std::printf("| %s | %d | %d | %d | %d | %d | %d | %d |\n", kBandNames[b], bands[b].cases,
+                bands[b].distance_pass, bands[b].distance_flagged, bands[b].distance_failed,
+                bands[b].contact_pass, bands[b].contact_flagged, bands[b].contact_failed);
+  int calls = 0, cases = 0;
+  for (const DistanceTally& t : tallies) calls += t.oracle_calls, cases += t.cases;
+  std::printf("\n%d full oracle searches for %d cases\n\n", calls, cases);
 }
 
 }  // namespace

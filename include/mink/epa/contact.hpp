@@ -157,8 +157,8 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // Separated, or penetrating by the radii only.
     Vec3T<S> on_a, on_b;
     gjk.simplex.witness_points(on_a, on_b);
-    detail::contact_from_cores(on_a, on_b, detail::separation_direction(gjk.simplex, gjk.v),
-                               gjk.upper, radius_a, radius_b, inside, result);
+    detail::contact_from_cores(on_a, on_b, detail::gjk_normal(diff, gjk.simplex, gjk.v), gjk.upper,
+                               radius_a, radius_b, inside, result);
     result.normal = pose_a.rotate(result.normal);
     result.point_a = pose_a.apply(result.point_a);
     result.point_b = pose_a.apply(result.point_b);

@@ -90,17 +90,23 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.error = detail::kOverflowError;
     return result;
   }
-  if (gjk.status == Status::Intersecting) {
+  // Cores within the touching tolerance on GJK's lower bound and a few times that on its upper
+  // one touch: GJK on curved cores that touch crawls (its bounds meet only at the cap), and the
+  // direction of a v that short is rounding (contact() hands such pairs to EPA).
+  const S touch = tolerances.relative * size;
+  if (gjk.status == Status::Intersecting || (gjk.lower <= radius_a + radius_b + touch &&
+                                             gjk.upper <= radius_a + radius_b + S(16) * touch)) {
+    result.status = Status::Intersecting;
     result.intersect = true;
     return result;
   }
   const S core_distance = gjk.upper;
   result.distance = std::max(S(0), core_distance - radius_a - radius_b);
   result.error_bound = std::max(S(0), gjk.upper - gjk.lower);
-  result.intersect = gjk.status == Status::IterationLimit &&
-                     core_distance <= radius_a + radius_b + tolerances.relative * size;
+  result.intersect =
+      gjk.status == Status::IterationLimit && core_distance <= radius_a + radius_b + touch;
   if (!(core_distance > S(0))) return result;
-  const Vec3T<S> normal_local = detail::separation_direction(gjk.simplex, gjk.v);
+  const Vec3T<S> normal_local = detail::gjk_normal(diff, gjk.simplex, gjk.v);
   Vec3T<S> on_a, on_b;
   gjk.simplex.witness_points(on_a, on_b);
   on_a += radius_a * normal_local;

@@ -249,11 +249,42 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
   if (v_in_set) out.upper = v.norm();
   if (!(out.upper <= std::numeric_limits<S>::max()) && v_in_set) out.status = Status::InvalidInput;
   if (out.status == Status::Separated && out.upper <= inside) out.status = Status::Intersecting;
+  // Stopped with the bounds apart (no progress and no restart left: curved cores that touch, or
+  // nearly): not converged, whatever the exit. Beyond the tolerance and the rounding floor of
+  // the bounds, which grows with the distance (shapes far apart).
+  if (out.status == Status::Separated &&
+      out.upper - out.lower > S(2) * tol.relative * size +
+                                  S(64) * std::numeric_limits<S>::epsilon() * (out.upper + size))
+    out.status = Status::IterationLimit;
   // Cores that meet have distance 0; cores apart but within the radii keep their bounds.
   if (out.status == Status::Intersecting && !(out.upper > touch)) out.lower = S(0);
   save_cache(
       cache, simplex.size, [&simplex](int i) { return simplex.vertices[i].dir; }, v);
   return out;
+}
+
+/// The normal (unit, from A to B, in A's frame) for GJK's answer: -v / |v|, or the direction
+/// separation_direction() corrects it to. The correction removes the rounding tilt of a v that
+/// is tiny next to the points it came from, exact when the simplex lies on a flat feature of
+/// A - B; on a curved one the simplex is a chord and its normal is off by the chord's sag. So
+/// when the two differ, both are measured (one support call each) and the one whose support
+/// plane lies farther out wins: its separation is proven, and it is within the bounds' gap of
+/// the best.
+template <ConvexShape A, ConvexShape B>
+Vec3T<typename A::Scalar> gjk_normal(const CoreDifference<A, B>& diff,
+                                     const SimplexT<typename A::Scalar>& simplex,
+                                     const Vec3T<typename A::Scalar>& v) {
+  using S = typename A::Scalar;
+  const S length = v.norm();
+  const Vec3T<S> corrected = separation_direction(simplex, v);
+  if (!(length > S(0))) return corrected;
+  const Vec3T<S> plain = -v / length;
+  if (!((corrected - plain).squaredNorm() > S(1e-24))) return corrected;
+  // A normal n proves the separation -h(n), h the support function of A - B.
+  SimplexVertexT<S> on_plain, on_corrected;
+  diff.support(plain, on_plain);
+  diff.support(corrected, on_corrected);
+  return plain.dot(on_plain.w) < corrected.dot(on_corrected.w) ? plain : corrected;
 }
 
 template <class S>
