@@ -90,12 +90,12 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.error = detail::kOverflowError;
     return result;
   }
-  // Cores within the touching tolerance on GJK's lower bound and a few times that on its upper
+  // Cores within the touching tolerance on GJK's lower bound and four times that on its upper
   // one touch: GJK on curved cores that touch crawls (its bounds meet only at the cap), and the
   // direction of a v that short is rounding (contact() hands such pairs to EPA).
   const S touch = tolerances.relative * size;
   if (gjk.status == Status::Intersecting || (gjk.lower <= radius_a + radius_b + touch &&
-                                             gjk.upper <= radius_a + radius_b + S(16) * touch)) {
+                                             gjk.upper <= radius_a + radius_b + S(4) * touch)) {
     result.status = Status::Intersecting;
     result.intersect = true;
     return result;
