@@ -249,13 +249,6 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
   if (v_in_set) out.upper = v.norm();
   if (!(out.upper <= std::numeric_limits<S>::max()) && v_in_set) out.status = Status::InvalidInput;
   if (out.status == Status::Separated && out.upper <= inside) out.status = Status::Intersecting;
-  // Stopped with the bounds apart (no progress and no restart left: curved cores that touch, or
-  // nearly): not converged, whatever the exit. Beyond the tolerance and the rounding floor of
-  // the bounds, which grows with the distance (shapes far apart).
-  if (out.status == Status::Separated &&
-      out.upper - out.lower > S(2) * tol.relative * size +
-                                  S(64) * std::numeric_limits<S>::epsilon() * (out.upper + size))
-    out.status = Status::IterationLimit;
   // Cores that meet have distance 0; cores apart but within the radii keep their bounds.
   if (out.status == Status::Intersecting && !(out.upper > touch)) out.lower = S(0);
   save_cache(
