@@ -155,15 +155,17 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   auto cores_apart = [&] {
     // Separated, or penetrating by the radii only.
-    Vec3T<S> on_a, on_b;
-    gjk.simplex.witness_points(on_a, on_b);
-    detail::contact_from_cores(on_a, on_b, detail::gjk_normal(diff, gjk.simplex, gjk.v), gjk.upper,
-                               radius_a, radius_b, inside, result);
+    const auto cores =
+        detail::separate_cores(diff, gjk, touch, tolerances.max_iterations, result.iterations);
+    detail::contact_from_cores(cores.on_a, cores.on_b, cores.normal, gjk.upper, radius_a, radius_b,
+                               inside, result);
     result.normal = pose_a.rotate(result.normal);
     result.point_a = pose_a.apply(result.point_a);
     result.point_b = pose_a.apply(result.point_b);
-    result.error_bound = std::max(S(0), gjk.upper - gjk.lower);
-    result.status = gjk.status == Status::IterationLimit
+    result.error_bound = std::max(S(0), gjk.upper - cores.lower);
+    // A bracket left open wider than curved cores converge to: GJK stalled (as in distance()).
+    const bool stalled = gjk.upper - cores.lower > tolerances.relative_depth * size;
+    result.status = gjk.status == Status::IterationLimit || stalled
                         ? Status::IterationLimit
                         : (result.intersect ? Status::Intersecting : Status::Separated);
     return result;

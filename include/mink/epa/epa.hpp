@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "mink/gjk/gjk.hpp"
+#include "mink/gjk/support_descent.hpp"
 #include "mink/math/orthogonal.hpp"
 
 namespace mink::detail {
@@ -510,10 +511,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   if (!seed_polytope(ws)) return degenerate(fallback);
 
   // 2. Expand the face nearest the origin, until the bracket closes.
-  S upper = std::numeric_limits<S>::infinity();
-  Vec3T<S> upper_normal = Vec3T<S>::UnitZ();  // the direction of the least support value seen
-  SimplexVertexT<S> upper_vertex{Vec3T<S>::Zero(), Vec3T<S>::Zero(), Vec3T<S>::Zero(),
-                                 Vec3T<S>::Zero()};  // and its support point
+  SupportMinimum<S> least;  // the least support value seen, its direction and support point
   enum class Step { Expanded, Closed, Stuck, Overflow };
   // Samples A - B along face f's normal, keeps the least support value seen, and pushes f out
   // unless it already lies on the boundary of A - B.
@@ -523,10 +521,10 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     const S length = std::sqrt(face.nn);
     const S h = face.n.dot(w.w) / length;
     if (!(std::abs(h) <= std::numeric_limits<S>::max())) return Step::Overflow;
-    if (h < upper) {
-      upper = h;
-      upper_vertex = w;
-      upper_normal = face.n / length;
+    if (h < least.value) {
+      least.value = h;
+      least.vertex = w;
+      least.normal = face.n / length;
     }
     if (h - face.offset / length <= gain_tol) return Step::Closed;
     // w is a vertex of the face: h is its distance, to rounding.
@@ -550,81 +548,13 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   // around the axis of coaxial cones, cylinders or spheroids, where P would need refining all
   // along the circle (thousands of faces) before its nearest face is within the tolerance. The
   // answer is then the upper end, which only needs the least support value near one of those
-  // normals: descend on h from the best normal seen, along great circles. h is convex and
-  // positively homogeneous, its gradient the support point s, so along u(t) = cos t u + sin t v
-  // the slope is s(u(t)) . u'(t). The minimum on a circle is bracketed by the sign of the slope
-  // and found where the support planes of the bracket's ends cross (safeguarded by bisection),
-  // which is exact at a kink of h (a cone's rim, where its slope jumps). At a kink the next
-  // circle follows the valley: its direction is minus the least combination of the gradients on
-  // either side (a bundle of two), not the one-sided gradient, which would only zigzag across.
-  // The upper end can only go down.
-  if (!converged && upper < std::numeric_limits<S>::infinity()) {
-    best = ws.nearest();
-    const S lower = ws.faces[best].distance();
-    bool have_other = false;  // a support point across the kink the last circle ended at
-    Vec3T<S> other = Vec3T<S>::Zero();
-    while (out.iterations < tol.max_iterations) {
-      const Vec3T<S> u = upper_normal;
-      Vec3T<S> gradient = upper_vertex.w - u.dot(upper_vertex.w) * u;  // tangential part
-      if (have_other) {
-        const Vec3T<S> across = other - u.dot(other) * u - gradient;
-        const S aa = across.squaredNorm();
-        if (aa > S(0)) gradient += std::clamp(-gradient.dot(across) / aa, S(0), S(1)) * across;
-      }
-      const S slope = gradient.norm();
-      if (!(slope > S(0))) break;
-      const Vec3T<S> v = -gradient / slope;
-      // The minimum on the circle is within t = 2 (upper - lower) / slope: at a kink h rises
-      // from there at the slope at least, on a smooth minimum the drop is at most that.
-      S lo = S(0), hi = std::min(S(2) * (upper - lower) / slope, S(0.5));
-      Vec3T<S> s_lo = upper_vertex.w, s_hi = Vec3T<S>::Zero();
-      S slope_lo = -slope, slope_hi = S(0);
-      bool bracketed = false;
-      int trials = 0;
-      const S start = upper;
-      while (out.iterations < tol.max_iterations && (hi - lo) * slope > gain_tol) {
-        S t = hi;
-        if (bracketed) {
-          // Alternately where the planes of s_lo and s_hi cross, (s_lo - s_hi) . u(t) = 0, exact
-          // at a kink, and where the slope's secant is zero, fast on a smooth minimum; bisection
-          // when either falls near an end.
-          if (++trials % 2) {
-            const Vec3T<S> jump = s_lo - s_hi;
-            t = std::atan2(-jump.dot(u), jump.dot(v));
-          } else {
-            t = lo + (hi - lo) * (-slope_lo / (slope_hi - slope_lo));
-          }
-          const S margin = (hi - lo) / S(16);
-          if (!(t > lo + margin && t < hi - margin)) t = (lo + hi) / S(2);
-        }
-        const Vec3T<S> d = std::cos(t) * u + std::sin(t) * v;
-        const SimplexVertexT<S> w = support(d);
-        const S h = d.dot(w.w);
-        if (!(std::abs(h) <= std::numeric_limits<S>::max())) break;
-        if (h < upper) {
-          upper = h;
-          upper_vertex = w;
-          upper_normal = d;
-        }
-        const S slope_t = w.w.dot(std::cos(t) * v - std::sin(t) * u);
-        if (slope_t < S(0)) {  // still descending at t
-          lo = t;
-          s_lo = w.w;
-          slope_lo = slope_t;
-          if (!bracketed) hi = std::min(hi * S(4), S(1.5));
-          if (!bracketed && hi >= S(1.5)) break;
-        } else {
-          hi = t;
-          s_hi = w.w;
-          slope_hi = slope_t;
-          bracketed = true;
-        }
-      }
-      // The bracket's end that is not the best point lies across the minimum from it.
-      have_other = bracketed;
-      other = upper_vertex.w == s_hi ? s_lo : s_hi;
-      if (!(start - upper > gain_tol)) break;  // this circle gained nothing: a minimum
-    }
+  // normals: descend_support() from the best normal seen. The upper end can only go down.
+  best = ws.nearest();
+  const bool polished = !converged && least.value < std::numeric_limits<S>::infinity();
+  if (polished && !descend_support(diff, ws.faces[best].distance(), gain_tol, tol.max_iterations,
+                                   out.iterations, least)) {
+    out.status = Status::InvalidInput;
+    return out;
   }
 
   // 4. Witness points: the origin's projection p = d n in barycentric coordinates. p lies in the
@@ -640,14 +570,14 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     const Vec3T<S>& w0 = ws.vertices[f.v[0]].w;
     const S area = normal.dot((ws.vertices[f.v[1]].w - w0).cross(ws.vertices[f.v[2]].w - w0));
     if (!(area > S(0))) return -std::numeric_limits<S>::infinity();
-    S least = std::numeric_limits<S>::infinity();
+    S smallest = std::numeric_limits<S>::infinity();
     for (int k = 0; k < 3; ++k) {
       const Vec3T<S>& q = ws.vertices[f.v[(k + 1) % 3]].w;
       const Vec3T<S>& r = ws.vertices[f.v[(k + 2) % 3]].w;
       lambda[k] = normal.dot((q - p).cross(r - p)) / area;
-      least = std::min(least, lambda[k]);
+      smallest = std::min(smallest, lambda[k]);
     }
-    return least;
+    return smallest;
   };
   S lambda[3] = {S(1), S(1), S(1)};
   int holder = best;
@@ -682,19 +612,19 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   }
   out.normal = normal;
   out.depth = out.lower = depth;
-  out.upper = std::max(depth, upper);
-  if (!converged && upper < std::numeric_limits<S>::infinity()) {
+  out.upper = std::max(depth, least.value);
+  if (polished) {
     // EPA did not close the bracket on a face (the cap, the polish, an expansion that rounding
     // would not allow): the nearest face is only a lower bound, and its normal may be far from
     // the answer even when the polish brought the upper end down to it, while moving B by h(n)
     // along the normal n of the least support value h seen always separates the shapes. That is
     // the answer; `upper - depth` (error_bound) says how good, and decides the status.
-    out.normal = upper_normal;
-    out.a = upper_vertex.a;
-    out.b = upper_vertex.a - upper * upper_normal;
-    if (upper - depth > gain_tol && out.status == Status::Intersecting)
+    out.normal = least.normal;
+    out.a = least.vertex.a;
+    out.b = least.vertex.a - least.value * least.normal;
+    if (least.value - depth > gain_tol && out.status == Status::Intersecting)
       out.status = Status::IterationLimit;
-    out.depth = upper;
+    out.depth = least.value;
   }
   return out;
 }

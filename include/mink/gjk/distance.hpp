@@ -12,7 +12,13 @@
 /// `tolerances.relative * size` (size: the sum of the shapes' bounding radii), or at
 /// the rounding floor. Polytopes, boxes, points, segments and triangles converge exactly in a few
 /// iterations; spheres and capsules are points and segments with a radius, so they are exact too.
-/// Touching shapes (distance <= `tolerances.relative * size`) count as intersecting.
+/// On curved cores GJK ends at the rounding floor with a simplex that is a chord of the surface;
+/// the normal is then the best proven one (separation.hpp: the least support value of A - B among
+/// GJK's directions, refined by a descent when GJK's bounds stay apart). Touching shapes (distance
+/// <= `tolerances.relative * size`) count as intersecting; so do curved cores that no direction
+/// proves apart by more than that while GJK's upper bound is within 16 times it. When no
+/// direction proves them apart and GJK's upper bound is farther, GJK stalled: IterationLimit, with
+/// the distance bracketed by `error_bound`.
 ///
 /// Penetrating shapes: the result says Intersecting with distance 0; depth, normal and deepest
 /// points are the job of EPA (a separate query).
@@ -25,6 +31,7 @@
 
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
+#include "mink/gjk/separation.hpp"
 
 namespace mink {
 
@@ -90,30 +97,36 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.error = detail::kOverflowError;
     return result;
   }
-  // Cores within the touching tolerance on GJK's lower bound and four times that on its upper
-  // one touch: GJK on curved cores that touch crawls (its bounds meet only at the cap), and the
-  // direction of a v that short is rounding (contact() hands such pairs to EPA).
   const S touch = tolerances.relative * size;
-  if (gjk.status == Status::Intersecting || (gjk.lower <= radius_a + radius_b + touch &&
-                                             gjk.upper <= radius_a + radius_b + S(4) * touch)) {
-    result.status = Status::Intersecting;
+  const S radii = radius_a + radius_b;
+  if (gjk.status == Status::Intersecting) {
     result.intersect = true;
     return result;
   }
-  const S core_distance = gjk.upper;
-  result.distance = std::max(S(0), core_distance - radius_a - radius_b);
-  result.error_bound = std::max(S(0), gjk.upper - gjk.lower);
-  result.intersect =
-      gjk.status == Status::IterationLimit && core_distance <= radius_a + radius_b + touch;
-  if (!(core_distance > S(0))) return result;
-  const Vec3T<S> normal_local = detail::gjk_normal(diff, gjk.simplex, gjk.v);
-  Vec3T<S> on_a, on_b;
-  gjk.simplex.witness_points(on_a, on_b);
-  on_a += radius_a * normal_local;
-  on_b -= radius_b * normal_local;
-  result.normal = pose_a.rotate(normal_local);
-  result.point_a = pose_a.apply(on_a);
-  result.point_b = pose_a.apply(on_b);
+  const auto cores =
+      detail::separate_cores(diff, gjk, touch, tolerances.max_iterations, result.iterations);
+  if (cores.lower <= radii + touch) {
+    // No direction proves the cores apart by more than the touching tolerance. Within 16 times
+    // it on GJK's upper bound they touch: GJK on curved cores that touch crawls, and its bounds
+    // meet only at the cap (contact() hands such pairs to EPA). Farther, GJK stalled: the
+    // distance is only bracketed.
+    if (gjk.upper <= radii + S(16) * touch) {
+      result.status = Status::Intersecting;
+      result.intersect = true;
+      return result;
+    }
+    result.status = Status::IterationLimit;
+  } else if (gjk.upper - cores.lower > tolerances.relative_depth * size) {
+    // Proven apart, but the bracket stayed open wider than curved cores converge to (EPA's
+    // tolerance): GJK stalled short of the distance, and the descent short of the normal.
+    result.status = Status::IterationLimit;
+  }
+  result.distance = std::max(S(0), gjk.upper - radii);
+  result.error_bound = std::max(S(0), gjk.upper - cores.lower);
+  result.intersect = result.status == Status::IterationLimit && gjk.upper <= radii + touch;
+  result.normal = pose_a.rotate(cores.normal);
+  result.point_a = pose_a.apply(Vec3T<S>(cores.on_a + radius_a * cores.normal));
+  result.point_b = pose_a.apply(Vec3T<S>(cores.on_b - radius_b * cores.normal));
   return result;
 }
 

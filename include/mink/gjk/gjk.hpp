@@ -85,6 +85,11 @@ struct GjkOutcome {
   Vec3T<S> v = Vec3T<S>::Zero();  ///< closest point of A - B's core to the origin (A's frame)
   S upper = std::numeric_limits<S>::infinity();  ///< upper bound on the core distance
   S lower = S(0);                                ///< lower bound on the core distance
+  /// The v whose support point proved `lower` (its normal is -lower_v / |lower_v|, A's frame)
+  /// and that point; meaningful when lower > 0.
+  Vec3T<S> lower_v = Vec3T<S>::Zero();
+  SimplexVertexT<S> lower_vertex{Vec3T<S>::Zero(), Vec3T<S>::Zero(), Vec3T<S>::Zero(),
+                                 Vec3T<S>::Zero()};
   int iterations = 0;
 };
 
@@ -148,15 +153,21 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
     diff.support(-v, vertex);
     ++out.iterations;
     const S vw = v.dot(vertex.w);
-    out.lower = std::max(out.lower, vw / std::sqrt(v_sq));
+    const S v_length = std::sqrt(v_sq);
+    if (vw / v_length > out.lower) {
+      out.lower = vw / v_length;
+      out.lower_v = v;
+      out.lower_vertex = vertex;
+    }
     if (v_in_set) {
       // Bounds met: |v| - v.w/|v| <= tol * size, i.e. gap = |v|^2 - v.w <= tol * size * |v|.
       // Relative to the shapes' size, not to the distance: far apart shapes still get their
       // distance to within tol * size (or to the rounding floor, which the no-progress test
-      // below catches). A NaN makes both comparisons false instead of exiting.
+      // below catches). A NaN makes both comparisons false instead of exiting. Not squared:
+      // (tol * size)^2 |v|^2 underflows for shapes of 1e-100, and the loop then ran on to a false
+      // rounding floor, 0.5% short.
       const S gap = v_sq - vw;
-      const S tol_size = tol.relative * size;
-      if (gap <= S(0) || gap * gap <= tol_size * tol_size * v_sq) {
+      if (gap <= S(0) || gap <= tol.relative * size * v_length) {
         out.status = Status::Separated;
         break;
       }
@@ -255,30 +266,6 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
   save_cache(
       cache, simplex.size, [&simplex](int i) { return simplex.vertices[i].dir; }, v);
   return out;
-}
-
-/// The normal (unit, from A to B, in A's frame) for GJK's answer: -v / |v|, or the direction
-/// separation_direction() corrects it to. The correction removes the rounding tilt of a v that
-/// is tiny next to the points it came from, exact when the simplex lies on a flat feature of
-/// A - B; on a curved one the simplex is a chord and its normal is off by the chord's sag. So
-/// when the two differ, both are measured (one support call each) and the one whose support
-/// plane lies farther out wins: its separation is proven, and it is within the bounds' gap of
-/// the best.
-template <ConvexShape A, ConvexShape B>
-Vec3T<typename A::Scalar> gjk_normal(const CoreDifference<A, B>& diff,
-                                     const SimplexT<typename A::Scalar>& simplex,
-                                     const Vec3T<typename A::Scalar>& v) {
-  using S = typename A::Scalar;
-  const S length = v.norm();
-  const Vec3T<S> corrected = separation_direction(simplex, v);
-  if (!(length > S(0))) return corrected;
-  const Vec3T<S> plain = -v / length;
-  if (!((corrected - plain).squaredNorm() > S(1e-24))) return corrected;
-  // A normal n proves the separation -h(n), h the support function of A - B.
-  SimplexVertexT<S> on_plain, on_corrected;
-  diff.support(plain, on_plain);
-  diff.support(corrected, on_corrected);
-  return plain.dot(on_plain.w) < corrected.dot(on_corrected.w) ? plain : corrected;
 }
 
 /// What the cheap first phase of the boolean test found (enclose_origin()).
