@@ -46,6 +46,7 @@
 #include "mink/mink.hpp"
 #include "oracle/contact_check.hpp"
 #include "oracle/curved.hpp"
+#include "oracle/curved_to_mink.hpp"
 #include "oracle/penetration.hpp"
 #include "oracle/random.hpp"
 
@@ -61,6 +62,7 @@ using oracle::RigidPose;
 using oracle::Rng;
 using oracle::V3;
 using oracle::widen;
+using oracle::with_mink_shape;
 
 constexpr double kPi = std::numbers::pi;
 constexpr std::array<CurvedKind, 6> kKinds = {CurvedKind::Sphere,  CurvedKind::Box,
@@ -83,28 +85,6 @@ RigidPose rigid(const Pose& p) {
 /// A shape from double parameters (so that mink's copy is exact).
 CurvedShape make_shape(CurvedKind kind, double radius, double half_height, const Vec3& extents) {
   return {kind, radius, half_height, widen(extents)};
-}
-
-/// Calls f with the mink shape that `s` describes.
-template <class F>
-auto with_mink_shape(const CurvedShape& s, F&& f) {
-  const double r = static_cast<double>(s.radius), h = static_cast<double>(s.half_height);
-  const Vec3 e = s.extents.cast<double>();
-  switch (s.kind) {
-    case CurvedKind::Sphere:
-      return f(mink::Sphere{r});
-    case CurvedKind::Box:
-      return f(mink::Box{e});
-    case CurvedKind::Capsule:
-      return f(mink::Capsule{r, h});
-    case CurvedKind::Cylinder:
-      return f(mink::Cylinder{r, h});
-    case CurvedKind::Cone:
-      return f(mink::Cone{r, h});
-    case CurvedKind::Ellipsoid:
-      return f(mink::Ellipsoid{e});
-  }
-  return f(mink::Sphere{r});
 }
 
 mink::ContactResult run_contact(const CurvedShape& a, const Pose& pa, const CurvedShape& b,

@@ -12,6 +12,7 @@
 
 #include "mink/mink.hpp"
 #include "oracle/curved.hpp"
+#include "oracle/curved_to_mink.hpp"
 
 namespace {
 
@@ -22,6 +23,7 @@ using oracle::CurvedKind;
 using oracle::CurvedShape;
 using oracle::Real;
 using oracle::V3;
+using oracle::with_mink_shape;
 
 struct Case {
   const char* name;
@@ -32,27 +34,6 @@ struct Case {
   Mat3 rotation_b;
   Vec3 translation_b;
 };
-
-template <class F>
-auto with_mink_shape(const CurvedShape& s, F&& f) {
-  const double r = static_cast<double>(s.radius), h = static_cast<double>(s.half_height);
-  const Vec3 e = s.extents.cast<double>();
-  switch (s.kind) {
-    case CurvedKind::Box:
-      return f(mink::Box{e});
-    case CurvedKind::Capsule:
-      return f(mink::Capsule{r, h});
-    case CurvedKind::Cylinder:
-      return f(mink::Cylinder{r, h});
-    case CurvedKind::Cone:
-      return f(mink::Cone{r, h});
-    case CurvedKind::Ellipsoid:
-      return f(mink::Ellipsoid{e});
-    case CurvedKind::Sphere:
-      break;
-  }
-  return f(mink::Sphere{r});
-}
 
 Mat3 rows(double a, double b, double c, double d, double e, double f, double g, double h,
           double i) {

@@ -1,0 +1,33 @@
+// The mink shape that an oracle CurvedShape describes, handed to a generic callable: the bridge
+// between the independent oracle (curved.hpp, which knows nothing of mink) and the tests that
+// compare the two.
+#pragma once
+
+#include "mink/mink.hpp"
+#include "oracle/curved.hpp"
+
+namespace oracle {
+
+/// f(mink shape) for the shape s describes (its dimensions rounded to double).
+template <class F>
+auto with_mink_shape(const CurvedShape& s, F&& f) {
+  const double r = static_cast<double>(s.radius), h = static_cast<double>(s.half_height);
+  const mink::Vec3 e = s.extents.cast<double>();
+  switch (s.kind) {
+    case CurvedKind::Sphere:
+      return f(mink::Sphere{r});
+    case CurvedKind::Box:
+      return f(mink::Box{e});
+    case CurvedKind::Capsule:
+      return f(mink::Capsule{r, h});
+    case CurvedKind::Cylinder:
+      return f(mink::Cylinder{r, h});
+    case CurvedKind::Cone:
+      return f(mink::Cone{r, h});
+    case CurvedKind::Ellipsoid:
+      return f(mink::Ellipsoid{e});
+  }
+  return f(mink::Sphere{r});
+}
+
+}  // namespace oracle
