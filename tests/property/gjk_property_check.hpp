@@ -243,18 +243,39 @@ inline Case draw_case(oracle::Rng& rng, int ka, int kb) {
   return c;
 }
 
-/// The static-type sweep restricted to pairs whose A kind lies in [kFirst, kLast]: every case keeps
-/// its seed, so the union of the ranges is the whole sweep.
+/// The unordered pairs of kinds (ka <= kb), in a fixed order: check_pair() runs every query both
+/// ways, so an unordered pair covers both ordered ones.
+struct KindPair {
+  int a, b;
+};
+inline constexpr int kUnorderedPairs = zoo::kKindCount * (zoo::kKindCount + 1) / 2;
+inline constexpr KindPair unordered_pair(int index) {
+  for (int a = 0; a < zoo::kKindCount; ++a) {
+    const int row = zoo::kKindCount - a;  // pairs (a, a..kKindCount-1)
+    if (index < row) return {a, a + index};
+    index -= row;
+  }
+  return {0, 0};
+}
+
+/// The static-type sweep restricted to pairs whose A kind (the lower one) lies in [kFirst,
+/// kLast]: every case keeps its seed, so the union of the ranges is the whole sweep. Unordered
+/// pairs only: each file instantiates the queries once per ordered pair it needs, and with all
+/// ordered pairs per file the three files instantiated 240 pairs of templates between them for
+/// 144 distinct ones (most of CI's compile time).
 template <int kFirst, int kLast>
 void run_static_sweep() {
   const std::uint64_t base = 30000;
   const int n = oracle::sweep_count(3000);
   Stats stats;
+  int share = 0;
   for (int i = 0; i < n; ++i) {
     const std::uint64_t seed = base + i;
     oracle::Rng rng(seed);
-    const int ka = i % zoo::kKindCount, kb = (i / zoo::kKindCount) % zoo::kKindCount;
+    const KindPair kinds = unordered_pair(i % kUnorderedPairs);
+    const int ka = kinds.a, kb = kinds.b;
     if (ka < kFirst || ka > kLast) continue;
+    ++share;
     // Named references, not a structured binding: clang 14 cannot capture bindings in lambdas.
     const Case c = draw_case(rng, ka, kb);
     const zoo::Desc &da = c.da, &db = c.db;
@@ -264,19 +285,26 @@ void run_static_sweep() {
     const zoo::Static sa = zoo::make_static(da), sb = zoo::make_static(db);
     std::visit(
         [&](const auto& a) {
-          // Instantiate check_pair only for this file's A kinds.
+          // Instantiate check_pair only for this file's A kinds, against B kinds from A's on.
           constexpr int kKind =
               index_in<std::decay_t<decltype(a)>>(static_cast<zoo::Static*>(nullptr));
           if constexpr (kKind >= kFirst && kKind <= kLast)
-            std::visit([&](const auto& b) { check_pair(a, da, pa, b, db, pb, motion, rng, stats); },
-                       sb);
+            std::visit(
+                [&](const auto& b) {
+                  constexpr int kOther =
+                      index_in<std::decay_t<decltype(b)>>(static_cast<zoo::Static*>(nullptr));
+                  if constexpr (kOther >= kKind)
+                    check_pair(a, da, pa, b, db, pb, motion, rng, stats);
+                },
+                sb);
         },
         sa);
   }
   stats.print("static shapes");
-  const int share = n * (kLast - kFirst + 1) / zoo::kKindCount;
+  // Both answers must be exercised; points, segments and triangles rarely meet at random poses,
+  // so the files that pair them among themselves see 1 intersecting pair in 20 or fewer.
   EXPECT_GT(stats.separated, share / 4);
-  EXPECT_GT(stats.intersecting, share / 20);
+  EXPECT_GT(stats.intersecting, share / 40);
 }
 
 }  // namespace property
