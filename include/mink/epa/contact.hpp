@@ -154,20 +154,23 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     return result;
   }
   auto cores_apart = [&] {
-    // Separated, or penetrating by the radii only.
+    // Separated, penetrating by the radii only, or touching: the status by the rule distance()
+    // shares (separate_cores()).
+    const S radii = radius_a + radius_b;
     const auto cores =
-        detail::separate_cores(diff, gjk, touch, tolerances.max_iterations, result.iterations);
+        detail::separate_cores(diff, gjk, radii, size, tolerances, result.iterations);
     detail::contact_from_cores(cores.on_a, cores.on_b, cores.normal, gjk.upper, radius_a, radius_b,
                                inside, result);
+    if (cores.status == Status::Intersecting) {
+      // Curved cores that touch, beyond `inside` by GJK's crawl only: depth and distance 0.
+      result.intersect = true;
+      result.distance = S(0);
+    }
     result.normal = pose_a.rotate(result.normal);
     result.point_a = pose_a.apply(result.point_a);
     result.point_b = pose_a.apply(result.point_b);
     result.error_bound = std::max(S(0), gjk.upper - cores.lower);
-    // A bracket left open wider than curved cores converge to: GJK stalled (as in distance()).
-    const bool stalled = gjk.upper - cores.lower > tolerances.relative_depth * size;
-    result.status = gjk.status == Status::IterationLimit || stalled
-                        ? Status::IterationLimit
-                        : (result.intersect ? Status::Intersecting : Status::Separated);
+    result.status = cores.status;
     return result;
   };
   // GJK proves the cores apart only with a separating plane (lower bound > touch). Without one

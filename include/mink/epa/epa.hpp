@@ -521,11 +521,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     const S length = std::sqrt(face.nn);
     const S h = face.n.dot(w.w) / length;
     if (!(std::abs(h) <= std::numeric_limits<S>::max())) return Step::Overflow;
-    if (h < least.value) {
-      least.value = h;
-      least.vertex = w;
-      least.normal = face.n / length;
-    }
+    least.offer(h, face.n / length, w);
     if (h - face.offset / length <= gain_tol) return Step::Closed;
     // w is a vertex of the face: h is its distance, to rounding.
     for (int k = 0; k < 3; ++k)

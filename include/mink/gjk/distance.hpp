@@ -99,31 +99,23 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   const S touch = tolerances.relative * size;
   const S radii = radius_a + radius_b;
-  if (gjk.status == Status::Intersecting) {
+  if (gjk.status == Status::Intersecting || gjk.upper <= radii + touch) {
+    // Within touching range by GJK's upper bound, a distance of 0 is exact even where GJK hit
+    // its cap.
+    result.status = Status::Intersecting;
     result.intersect = true;
     return result;
   }
-  const auto cores =
-      detail::separate_cores(diff, gjk, touch, tolerances.max_iterations, result.iterations);
-  if (cores.lower <= radii + touch) {
-    // No direction proves the cores apart by more than the touching tolerance. Within 16 times
-    // it on GJK's upper bound they touch: GJK on curved cores that touch crawls, and its bounds
-    // meet only at the cap (contact() hands such pairs to EPA). Farther, GJK stalled: the
-    // distance is only bracketed.
-    if (gjk.upper <= radii + S(16) * touch) {
-      result.status = Status::Intersecting;
-      result.intersect = true;
-      return result;
-    }
-    result.status = Status::IterationLimit;
-  } else if (gjk.upper - cores.lower > tolerances.relative_depth * size) {
-    // Proven apart, but the bracket stayed open wider than curved cores converge to (EPA's
-    // tolerance): GJK stalled short of the distance, and the descent short of the normal.
-    result.status = Status::IterationLimit;
+  // Cores apart, or touching within tolerance (curved cores that touch, whose GJK crawls), or
+  // GJK stalled: separate_cores() tells, by the rule contact() shares.
+  const auto cores = detail::separate_cores(diff, gjk, radii, size, tolerances, result.iterations);
+  result.status = cores.status;
+  if (cores.status == Status::Intersecting) {
+    result.intersect = true;
+    return result;
   }
   result.distance = std::max(S(0), gjk.upper - radii);
   result.error_bound = std::max(S(0), gjk.upper - cores.lower);
-  result.intersect = result.status == Status::IterationLimit && gjk.upper <= radii + touch;
   result.normal = pose_a.rotate(cores.normal);
   result.point_a = pose_a.apply(Vec3T<S>(cores.on_a + radius_a * cores.normal));
   result.point_b = pose_a.apply(Vec3T<S>(cores.on_b - radius_b * cores.normal));

@@ -85,11 +85,10 @@ struct GjkOutcome {
   Vec3T<S> v = Vec3T<S>::Zero();  ///< closest point of A - B's core to the origin (A's frame)
   S upper = std::numeric_limits<S>::infinity();  ///< upper bound on the core distance
   S lower = S(0);                                ///< lower bound on the core distance
-  /// The v whose support point proved `lower` (its normal is -lower_v / |lower_v|, A's frame)
-  /// and that point; meaningful when lower > 0.
+  /// The v whose support point proved `lower` (its normal is -lower_v / |lower_v|, A's frame);
+  /// meaningful when lower > 0. Only the direction: the point is rarely needed (separation.hpp)
+  /// and copying it on every improvement costs the hot loop.
   Vec3T<S> lower_v = Vec3T<S>::Zero();
-  SimplexVertexT<S> lower_vertex{Vec3T<S>::Zero(), Vec3T<S>::Zero(), Vec3T<S>::Zero(),
-                                 Vec3T<S>::Zero()};
   int iterations = 0;
 };
 
@@ -129,7 +128,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
       for (int k = 0; k < simplex.size; ++k) duplicate |= simplex.vertices[k].w == vertex.w;
       if (!duplicate) simplex.vertices[simplex.size++] = vertex;
     }
-    v = reduce_to_closest(buffers[current], buffers[current]);
+    v = reduce_to_closest_cold(buffers[current], buffers[current]);
     v_in_set = true;
     out.upper = v.norm();
   } else {
@@ -157,7 +156,6 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
     if (vw / v_length > out.lower) {
       out.lower = vw / v_length;
       out.lower_v = v;
-      out.lower_vertex = vertex;
     }
     if (v_in_set) {
       // Bounds met: |v| - v.w/|v| <= tol * size, i.e. gap = |v|^2 - v.w <= tol * size * |v|.
@@ -216,7 +214,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
           for (int m = 0; m < trial.size; ++m) repeated |= trial.vertices[m].w == mixed.w;
           if (!repeated && trial.size < 4) trial.vertices[trial.size++] = mixed;
         }
-        const Vec3T<S> candidate = reduce_to_closest(trial, trial);
+        const Vec3T<S> candidate = reduce_to_closest_cold(trial, trial);
         const S candidate_sq = candidate.squaredNorm();
         if (candidate_sq < best_sq) {
           best_sq = candidate_sq;

@@ -16,31 +16,19 @@ struct CoreSeparation {
   Vec3T<S> on_a;    ///< closest point of A's core (A's frame)
   Vec3T<S> on_b;    ///< closest point of B's core (A's frame); on_b - on_a = distance * normal
   S lower;          ///< proven lower bound on the core distance: the separation along `normal`
+  /// What GJK's bracket [lower, upper] on the core distance says of the full shapes (radii
+  /// added): Separated; Intersecting when they penetrate by the radii or touch (see
+  /// separate_cores()); IterationLimit when GJK hit its cap or its bracket stayed open.
+  Status status;
 };
 
-/// The normal and closest points for GJK's answer. A unit n proves the separation -h(n), h the
-/// support function of A - B, so the normal is the candidate with the least h:
-///   - -v / |v|, and its correction orthogonal to the final simplex (separation_direction()),
-///     which removes the rounding tilt of a v that is tiny next to the points it came from;
-///     exact when the simplex lies on a flat feature of A - B;
-///   - the direction that proved GJK's lower bound, when an earlier v did: on a curved core the
-///     final simplex mixes support points of A from different iterations, a chord whose
-///     direction is tilted by its sag (1e-9 of the size in h against a flat face), while its
-///     length is right to second order;
-///   - when the best of these still leaves GJK's bounds apart by more than twice `touch` (curved
-///     cores at the rounding floor), a descent on h from it (descend_support(), with at most
-///     max_iterations / 4 support calls): the minimum of h is minus the distance, at the normal.
-/// Only the first pair is free of support calls, and when it is the only candidate (the common
-/// case: GJK converged on its last v) nothing is measured. Extra support calls are counted in
-/// `iterations`. A normal other than the first pair's is taken only for a clear gain (see the
-/// end); the points then keep GJK's midpoint and distance and line up with it.
+/// The normal, closest points and proven lower bound of separate_cores() (see there), without
+/// the status.
 template <ConvexShape A, ConvexShape B>
-CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& diff,
-                                                  const GjkOutcome<typename A::Scalar>& gjk,
-                                                  typename A::Scalar touch, int max_iterations,
-                                                  int& iterations) {
+void find_separation(const CoreDifference<A, B>& diff, const GjkOutcome<typename A::Scalar>& gjk,
+                     typename A::Scalar touch, int max_iterations, int& iterations,
+                     CoreSeparation<typename A::Scalar>& out) {
   using S = typename A::Scalar;
-  CoreSeparation<S> out;
   gjk.simplex.witness_points(out.on_a, out.on_b);
   out.normal = separation_direction(gjk.simplex, gjk.v);
   out.lower = gjk.lower;
@@ -50,38 +38,91 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
   const S lower_length = gjk.lower_v.norm();
   const bool lower_differs = gjk.lower > S(0) && lower_length > S(0) && gjk.lower_v != gjk.v;
   const bool apart = gjk.upper - gjk.lower > S(2) * touch;
-  if (!plain_differs && !lower_differs && !apart) return out;
+  if (!plain_differs && !lower_differs && !apart) return;
 
   SupportMinimum<S> least;
-  auto consider = [&](const Vec3T<S>& n) {
+  auto measure = [&](const Vec3T<S>& n) {
     SimplexVertexT<S> w;
     diff.support(n, w);
     ++iterations;
-    const S h = n.dot(w.w);
-    if (h < least.value) least = {h, n, w};
+    least.offer(n.dot(w.w), n, w);
   };
-  consider(out.normal);
-  if (plain_differs) consider(plain);
+  measure(out.normal);
+  if (plain_differs) measure(plain);
   const S free_value = least.value;  // the best of the first pair
   const Vec3T<S> free_normal = least.normal;
-  if (lower_differs && -gjk.lower < least.value)
-    least = {-gjk.lower, Vec3T<S>(-gjk.lower_v / lower_length), gjk.lower_vertex};
-  // The minimum of h is minus the distance, at least -gjk.upper. On non-finite arithmetic the
-  // descent keeps its last finite answer, which is still a proven separation.
-  if (gjk.upper + least.value > S(2) * touch)
+  // The minimum of h is minus the distance, at least -gjk.upper. The lower bound's direction
+  // already proved its value; it needs a support point (GJK keeps only the direction) only to
+  // start the descent from. On non-finite arithmetic the descent keeps its last finite answer,
+  // which is still a proven separation.
+  const bool lower_wins = lower_differs && -gjk.lower < least.value;
+  if (gjk.upper + (lower_wins ? -gjk.lower : least.value) > S(2) * touch) {
+    if (lower_wins) measure(Vec3T<S>(-gjk.lower_v / lower_length));
     descend_support(diff, -gjk.upper, touch, iterations + max_iterations / 4, iterations, least);
+  } else if (lower_wins) {
+    least.value = -gjk.lower;
+    least.normal = -gjk.lower_v / lower_length;
+  }
   out.lower = std::max(out.lower, -least.value);
   out.normal = free_normal;
   // A new normal moves the points with it, by half the distance times the turn, off the exact
   // pair GJK's points are (their gap is -v); and near a smooth minimum of h the turn is the
   // square root of the gain. So a new normal only for a gain that counts: 16 times the touching
   // tolerance (a tilt across a kink of h, a flat face's edge, gains at first order).
-  if (!(free_value - least.value > S(16) * touch)) return out;
+  if (!(free_value - least.value > S(16) * touch)) return;
   const Vec3T<S> middle = (out.on_a + out.on_b) / S(2);
   const S half = (out.on_b - out.on_a).norm() / S(2);
   out.normal = least.normal;
   out.on_a = middle - half * out.normal;
   out.on_b = middle + half * out.normal;
+}
+
+/// The normal and closest points for GJK's answer on cores that GJK did not find meeting, and
+/// the status of the full shapes; `radii` is the sum of the shapes' radii, `size` the sum of
+/// their bounding radii. A unit n proves the separation -h(n), h the support function of A - B,
+/// so the normal is the candidate with the least h:
+///   - -v / |v|, and its correction orthogonal to the final simplex (separation_direction()),
+///     which removes the rounding tilt of a v that is tiny next to the points it came from;
+///     exact when the simplex lies on a flat feature of A - B;
+///   - the direction that proved GJK's lower bound, when an earlier v did: on a curved core the
+///     final simplex mixes support points of A from different iterations, a chord whose
+///     direction is tilted by its sag (1e-9 of the size in h against a flat face), while its
+///     length is right to second order;
+///   - when the best of these still leaves GJK's bounds apart by more than twice the touching
+///     tolerance (curved cores at the rounding floor), a descent on h from it
+///     (descend_support(), with at most max_iterations / 4 support calls): the minimum of h is
+///     minus the distance, at the normal.
+/// Only the first pair is free of support calls, and when it is the only candidate (the common
+/// case: GJK converged on its last v) nothing is measured. Extra support calls are counted in
+/// `iterations`. A normal other than the first pair's is taken only for a clear gain (see the
+/// end); the points then keep GJK's midpoint and distance and line up with it.
+///
+/// The status, one rule for distance() and contact() (touch = tolerances.relative * size):
+///   - GJK's upper bound within radii + touch: the shapes penetrate by the radii, or touch;
+///   - else, no direction proves the cores apart by more than radii + touch: they touch when
+///     GJK's upper bound is within 16 touching tolerances of it (GJK on curved cores that touch
+///     crawls, and its bounds meet only at the cap), else GJK stalled and the distance is only
+///     bracketed (IterationLimit);
+///   - else separated, unless GJK hit its cap or the bracket stayed open wider than curved cores
+///     converge to (`relative_depth * size`, EPA's tolerance): IterationLimit.
+template <ConvexShape A, ConvexShape B>
+CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& diff,
+                                                  const GjkOutcome<typename A::Scalar>& gjk,
+                                                  typename A::Scalar radii, typename A::Scalar size,
+                                                  const TolerancesT<typename A::Scalar>& tolerances,
+                                                  int& iterations) {
+  using S = typename A::Scalar;
+  const S touch = tolerances.relative * size;
+  CoreSeparation<S> out;
+  find_separation(diff, gjk, touch, tolerances.max_iterations, iterations, out);
+  const bool capped = gjk.status == Status::IterationLimit;
+  const bool open = gjk.upper - out.lower > tolerances.relative_depth * size;
+  if (gjk.upper <= radii + touch)
+    out.status = capped || open ? Status::IterationLimit : Status::Intersecting;
+  else if (out.lower <= radii + touch)
+    out.status = gjk.upper <= radii + S(16) * touch ? Status::Intersecting : Status::IterationLimit;
+  else
+    out.status = capped || open ? Status::IterationLimit : Status::Separated;
   return out;
 }
 

@@ -23,6 +23,15 @@ struct SupportMinimum {
   S value = std::numeric_limits<S>::infinity();
   Vec3T<S> normal = Vec3T<S>::UnitZ();
   SimplexVertexT<S> vertex{Vec3T<S>::Zero(), Vec3T<S>::Zero(), Vec3T<S>::Zero(), Vec3T<S>::Zero()};
+
+  /// Keeps h, measured along the unit n with support point w, when it is the least so far.
+  void offer(S h, const Vec3T<S>& n, const SimplexVertexT<S>& w) {
+    if (h < value) {
+      value = h;
+      normal = n;
+      vertex = w;
+    }
+  }
 };
 
 /// Lowers `best` (its value must be h(best.normal), its vertex that support point) by descent
@@ -86,11 +95,7 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
       ++iterations;
       const S h = d.dot(w.w);
       if (!(std::abs(h) <= std::numeric_limits<S>::max())) return false;
-      if (h < best.value) {
-        best.value = h;
-        best.vertex = w;
-        best.normal = d;
-      }
+      best.offer(h, d, w);
       const S slope_t = w.w.dot(std::cos(t) * v - std::sin(t) * u);
       if (slope_t < S(0)) {  // still descending at t
         lo = t;
