@@ -135,6 +135,9 @@ TEST(CurvedSeparation, MatchesOracle) {
         expect_against_oracle(c, d, d.distance, expected);
         const auto k = mink::contact(a, pose_a, b, pose_b);
         expect_against_oracle(c, k, k.distance - k.depth, expected);
+        // One rule for both queries (separate_cores()): the same verdict and status.
+        EXPECT_EQ(d.intersect, k.intersect) << c.name;
+        EXPECT_EQ(d.status, k.status) << c.name;
         return 0;
       });
     });
