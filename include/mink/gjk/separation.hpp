@@ -1,5 +1,6 @@
 /// @file separation.hpp
-/// The answer for cores that GJK found apart: the normal and the closest points of the cores.
+/// The answer for cores that GJK did not find meeting: the normal, the closest points of the cores
+/// and the status of the full shapes (one rule for distance() and contact()).
 #pragma once
 
 #include <algorithm>

@@ -81,7 +81,11 @@ class PolytopeT {
   std::size_t size() const { return x_.size(); }
   Vec3T<S> point(std::size_t i) const { return {x_[i], y_[i], z_[i]}; }
 
-  Vec3T<S> support_core(const Vec3T<S>& d) const { return point(support_index(d)); }
+  /// Always inlined, with the scan of small point sets (support_scan.hpp); the count towards the
+  /// hull and the climb, for polytopes of kHullClimbMinVertices points or more, stay out of line.
+  [[gnu::always_inline]] inline Vec3T<S> support_core(const Vec3T<S>& d) const {
+    return point(lazy_hull_ ? lazy_support_index(d) : scan_index(d));
+  }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return bounding_radius_; }
   const char* error() const { return x_.empty() ? "polytope has no points" : nullptr; }
@@ -89,17 +93,11 @@ class PolytopeT {
   /// Index of a point farthest along d: the lowest such index on ties while scanning (see
   /// support_scan.hpp), a hull vertex once the polytope climbs (see the class comment).
   std::size_t support_index(const Vec3T<S>& d) const {
-    if (lazy_hull_) {
-      detail::PolytopeHull<S>& lazy = *lazy_hull_;
-      if (lazy.state.load(std::memory_order_acquire) == lazy.kReady)
-        return lazy.point_of_vertex[lazy.hull->support_index(d)];
-      count_support(lazy);
-    }
-    return scan_index(d);
+    return lazy_hull_ ? lazy_support_index(d) : scan_index(d);
   }
 
   /// The brute-force answer, whatever support_index does: lowest index among the farthest.
-  std::size_t scan_index(const Vec3T<S>& d) const {
+  [[gnu::always_inline]] inline std::size_t scan_index(const Vec3T<S>& d) const {
     return detail::support_index(x_.data(), y_.data(), z_.data(), x_.size(), d.x(), d.y(), d.z());
   }
 
@@ -114,6 +112,15 @@ class PolytopeT {
 
  private:
   PolytopeT() = default;
+
+  /// support_index() of a polytope that may climb: its hull once built, else the scan, counted.
+  [[gnu::noinline]] std::size_t lazy_support_index(const Vec3T<S>& d) const {
+    detail::PolytopeHull<S>& lazy = *lazy_hull_;
+    if (lazy.state.load(std::memory_order_acquire) == lazy.kReady)
+      return lazy.point_of_vertex[lazy.hull->support_index(d)];
+    count_support(lazy);
+    return scan_index(d);
+  }
 
   /// Counts a scanned query and builds the hull at the kPolytopeHullAfterSupports-th. The count
   /// is a relaxed load and store, not an atomic increment: a lost count between racing threads

@@ -14,6 +14,7 @@
 #include <bit>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
 #if defined(__AVX2__)
 #include <immintrin.h>
@@ -99,8 +100,9 @@ inline void lane_store(double* p, LaneVec v) {
 /// of vector maxima, and the first index that reaches it from the lanes' equality masks, with no
 /// branch on the data. A NaN dot product (a NaN direction, or inf times a 0 coordinate) counts as
 /// -inf, as it never wins in the scalar twin; lanes past n hold -inf and are masked off.
-inline std::size_t support_index_few(const double* xs, const double* ys, const double* zs,
-                                     std::size_t n, double dx, double dy, double dz) {
+[[gnu::always_inline]] inline std::size_t support_index_few(const double* xs, const double* ys,
+                                                            const double* zs, std::size_t n,
+                                                            double dx, double dy, double dz) {
   constexpr double kLow = -std::numeric_limits<double>::infinity();
   const __m128d vx = _mm_set1_pd(dx), vy = _mm_set1_pd(dy), vz = _mm_set1_pd(dz);
   const __m128d low = _mm_set1_pd(kLow);
@@ -125,12 +127,29 @@ inline std::size_t support_index_few(const double* xs, const double* ys, const d
   return mask == 0 ? 0 : std::size_t(std::countr_zero(mask));  // 0: no points
 }
 
+/// More than 8 points: blocks of SIMD dot products (below). Out of line, since the inlined path
+/// is the one for small sets; a template (of double only) so that the header may hold it.
+template <class S>
+[[gnu::noinline]] std::size_t support_index_many(const S* xs, const S* ys, const S* zs,
+                                                 std::size_t n, S dx, S dy, S dz);
+
+/// Always inlined, the 8-point path included: for the small hulls of a scene the support call is
+/// the body of every GJK and EPA iteration, and the calls into a scan of 8 points (saving and
+/// restoring registers on both sides) cost about as many instructions as the scan itself.
 template <>
-inline std::size_t support_index<double>(const double* xs, const double* ys, const double* zs,
-                                         std::size_t n, double dx, double dy, double dz) {
+[[gnu::always_inline]] inline std::size_t support_index<double>(const double* xs, const double* ys,
+                                                                const double* zs, std::size_t n,
+                                                                double dx, double dy, double dz) {
+  if (n <= 8) return support_index_few(xs, ys, zs, n, dx, dy, dz);
+  return support_index_many(xs, ys, zs, n, dx, dy, dz);
+}
+
+template <class S>
+std::size_t support_index_many(const S* xs, const S* ys, const S* zs, std::size_t n, S dx, S dy,
+                               S dz) {
+  static_assert(std::is_same_v<S, double>, "the SIMD scan is for double");
   constexpr int kVectors = 4;
   constexpr std::size_t kBlock = kVectors * kLaneWidth;
-  if (n <= 8) return support_index_few(xs, ys, zs, n, dx, dy, dz);
   if (n < kBlock) return support_index_scalar(xs, ys, zs, n, dx, dy, dz);
   // Blocks of kBlock points: the dot products and the block's maximum are pure SIMD with no
   // loop-carried dependency; only a block that beats the best so far (about log n of them for a
