@@ -81,18 +81,19 @@ class PolytopeT {
   std::size_t size() const { return x_.size(); }
   Vec3T<S> point(std::size_t i) const { return {x_[i], y_[i], z_[i]}; }
 
-  /// Always inlined, with the scan of small point sets (support_scan.hpp); the count towards the
-  /// hull and the climb, for polytopes of kHullClimbMinVertices points or more, stay out of line.
+  /// Always inlined, as support_index() is: the body of every GJK and EPA iteration.
   [[gnu::always_inline]] inline Vec3T<S> support_core(const Vec3T<S>& d) const {
-    return point(lazy_hull_ ? lazy_support_index(d) : scan_index(d));
+    return point(support_index(d));
   }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return bounding_radius_; }
   const char* error() const { return x_.empty() ? "polytope has no points" : nullptr; }
 
   /// Index of a point farthest along d: the lowest such index on ties while scanning (see
-  /// support_scan.hpp), a hull vertex once the polytope climbs (see the class comment).
-  std::size_t support_index(const Vec3T<S>& d) const {
+  /// support_scan.hpp), a hull vertex once the polytope climbs (see the class comment). Always
+  /// inlined, with the scan of small point sets; the count towards the hull and the climb, for
+  /// polytopes of kHullClimbMinVertices points or more, stay out of line.
+  [[gnu::always_inline]] inline std::size_t support_index(const Vec3T<S>& d) const {
     return lazy_hull_ ? lazy_support_index(d) : scan_index(d);
   }
 
