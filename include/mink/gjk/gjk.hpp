@@ -269,6 +269,28 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
 /// What the cheap first phase of the boolean test found (enclose_origin()).
 enum class EncloseVerdict { Separated, Intersecting, Unsure };
 
+/// The signed volume det(x, y, z) = x . (y x z) of the tetrahedron (origin, x, y, z) when its
+/// sign is certain, else 0. Certain: the computed value exceeds its rounding error bound, about
+/// 5 eps times the permanent (the same sum with every term taken absolute; the bound used is
+/// 8 eps), the static filter of Shewchuk's orient3d with the origin as the fourth point, which
+/// needs no subtraction of the inputs. Underflow (a permanent below min / eps), overflow and
+/// NaN give 0.
+template <class S>
+[[gnu::always_inline]] inline S certain_volume(const Vec3T<S>& x, const Vec3T<S>& y,
+                                               const Vec3T<S>& z) {
+  const S yz0 = y[1] * z[2], zy0 = y[2] * z[1];
+  const S yz1 = y[2] * z[0], zy1 = y[0] * z[2];
+  const S yz2 = y[0] * z[1], zy2 = y[1] * z[0];
+  const S det = x[0] * (yz0 - zy0) + x[1] * (yz1 - zy1) + x[2] * (yz2 - zy2);
+  const S permanent = std::abs(x[0]) * (std::abs(yz0) + std::abs(zy0)) +
+                      std::abs(x[1]) * (std::abs(yz1) + std::abs(zy1)) +
+                      std::abs(x[2]) * (std::abs(yz2) + std::abs(zy2));
+  constexpr S kEps = std::numeric_limits<S>::epsilon();
+  constexpr S kSmallest = std::numeric_limits<S>::min() / kEps;
+  const bool certain = std::abs(det) > S(8) * kEps * permanent && permanent >= kSmallest;
+  return certain ? det : S(0);
+}
+
 /// The first phase of the boolean test on cores with no radius: GJK that steers by the simplex
 /// feature facing the origin (its plane's or line's normal, from cross products) instead of the
 /// point closest to the origin (Casey Muratori's formulation, as in the seed article). On
@@ -276,69 +298,26 @@ enum class EncloseVerdict { Separated, Intersecting, Unsure };
 /// arithmetic and branches, and it is why the boolean test is worth having on polytopes.
 ///
 /// It only says what it can prove: Separated when a support plane leaves the origin more than
-/// `inside` away (as the distance loop does), Intersecting when its tetrahedron encloses the
-/// origin by the well-conditioned signed volumes of closest_on_tetrahedron(). Anything else
-/// (the origin within `inside` of A - B's boundary, a degenerate simplex, `max_supports` spent)
-/// is Unsure, and the distance-based loop decides. `iterations` counts the support calls;
-/// `directions[0..count)` are those of the final simplex, for the warm-start cache.
+/// `inside` away (as the distance loop does), Intersecting when the four barycentric volumes of
+/// its tetrahedron have one sign, each beyond its rounding error (certain_volume()): the origin
+/// is then strictly inside the tetrahedron of the computed support points, so within rounding of
+/// A - B. Anything else (a volume too small to sign, the origin near a face, a degenerate
+/// simplex, `max_supports` spent) is Unsure, and the distance-based loop decides. Steering needs
+/// no such care: a wrong turn costs a support call, not a wrong answer. `iterations` counts the
+/// support calls; `directions[0..count)` are those of the final simplex, for the warm-start cache.
 template <ConvexShape A, ConvexShape B>
 EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scalar inside_sq,
                               int max_supports, int& iterations,
                               Vec3T<typename A::Scalar> (&directions)[4], int& count) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  V p[4];                  // the simplex, newest point last
+  // The simplex, oldest first; the support point of this iteration, w, is not stored until the
+  // step below decides what to keep. Points are moved one by one (no index lists): this loop is
+  // the whole boolean test on small hulls, and its bookkeeping once cost as much as the supports.
+  V p[3];
   V d = diff.translation;  // towards the origin from A - B's centre, B's origin seen from A
   if (!(d.squaredNorm() > S(0))) d = V::UnitX();
   count = 0;
-  // Keeps the listed points of p (newest last) and their directions.
-  auto keep = [&p, &directions, &count](std::initializer_list<int> indices) {
-    V kept_p[4], kept_d[4];
-    int n = 0;
-    for (const int i : indices) {
-      kept_p[n] = p[i];
-      kept_d[n] = directions[i];
-      ++n;
-    }
-    for (int i = 0; i < n; ++i) {
-      p[i] = kept_p[i];
-      directions[i] = kept_d[i];
-    }
-    count = n;
-  };
-  // Segment (b, a), a newest: the origin lies beyond a's end or beside the segment.
-  auto segment = [&p, &d, &keep](int b, int a) {
-    const V ab = p[b] - p[a], ao = -p[a];
-    if (ab.dot(ao) > S(0)) {
-      keep({b, a});
-      d = ab.cross(ao).cross(ab);
-    } else {
-      keep({a});
-      d = ao;
-    }
-  };
-  // Triangle (c, b, a), a newest: an edge's side or the face's side facing the origin. A face
-  // is stored so that (b - a) x (c - a) points towards the origin.
-  auto triangle = [&p, &d, &keep, &segment](int c, int b, int a) {
-    const V ab = p[b] - p[a], ac = p[c] - p[a], ao = -p[a];
-    const V abc = ab.cross(ac);
-    if (abc.cross(ac).dot(ao) > S(0)) {
-      if (ac.dot(ao) > S(0)) {
-        keep({c, a});
-        d = ac.cross(ao).cross(ac);
-      } else {
-        segment(b, a);
-      }
-    } else if (ab.cross(abc).dot(ao) > S(0)) {
-      segment(b, a);
-    } else if (abc.dot(ao) > S(0)) {
-      keep({c, b, a});
-      d = abc;
-    } else {
-      keep({b, c, a});
-      d = -abc;
-    }
-  };
 
   while (iterations < max_supports) {
     const V w = diff.support_point(d);
@@ -354,37 +333,104 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
       }
       return EncloseVerdict::Unsure;
     }
-    p[count] = w;
-    directions[count] = d;
-    ++count;
+    const V wdir = d;
+    // Segment (p[k], w), w newest: the origin lies beside the segment (keep both, steer
+    // perpendicular to it) or beyond w's end (keep w alone).
+    auto segment_with = [&](int k) {
+      const V ab = p[k] - w;
+      if (ab.dot(-w) > S(0)) {
+        p[0] = p[k];
+        directions[0] = directions[k];
+        p[1] = w;
+        directions[1] = wdir;
+        count = 2;
+        d = ab.cross(-w).cross(ab);
+      } else {
+        p[0] = w;
+        directions[0] = wdir;
+        count = 1;
+        d = -w;
+      }
+    };
+    // Triangle (p[i], p[j], w), w newest: an edge's side or the face's side facing the origin.
+    auto triangle_with = [&](int i, int j) {
+      const V ao = -w;
+      const V ab = p[j] - w, ac = p[i] - w;
+      const V abc = ab.cross(ac);
+      if (abc.cross(ac).dot(ao) > S(0)) {
+        if (ac.dot(ao) > S(0)) {
+          // Edge (p[i], w).
+          const V pi = p[i], di = directions[i];
+          p[0] = pi;
+          directions[0] = di;
+          p[1] = w;
+          directions[1] = wdir;
+          count = 2;
+          d = ac.cross(ao).cross(ac);
+        } else {
+          segment_with(j);
+        }
+      } else if (ab.cross(abc).dot(ao) > S(0)) {
+        segment_with(j);
+      } else {
+        const V pi = p[i], di = directions[i], pj = p[j], dj = directions[j];
+        p[0] = pi;
+        directions[0] = di;
+        p[1] = pj;
+        directions[1] = dj;
+        p[2] = w;
+        directions[2] = wdir;
+        count = 3;
+        d = abc.dot(ao) > S(0) ? abc : V(-abc);
+      }
+    };
     switch (count) {
-      case 1:
+      case 0:
+        p[0] = w;
+        directions[0] = wdir;
+        count = 1;
         d = -w;
         break;
-      case 2:
-        segment(0, 1);
+      case 1:
+        segment_with(0);
         break;
-      case 3:
-        triangle(0, 1, 2);
+      case 2:
+        triangle_with(0, 1);
         break;
       default: {
-        // Tetrahedron (d, c, b, a) = p[0..3]; faces through a have outward normals abc, acd,
-        // adb because the old face (b, c, d) had a on its origin side.
-        const V ab = p[2] - p[3], ac = p[1] - p[3], ad = p[0] - p[3], ao = -p[3];
-        if (ab.cross(ac).dot(ao) > S(0)) {
-          keep({1, 2, 3});
-          triangle(0, 1, 2);
-        } else if (ac.cross(ad).dot(ao) > S(0)) {
-          keep({0, 1, 3});
-          triangle(0, 1, 2);
-        } else if (ad.cross(ab).dot(ao) > S(0)) {
-          keep({2, 0, 3});
-          triangle(0, 1, 2);
-        } else {
-          // Enclosed by the sign tests; the signed volumes confirm it or leave it undecided.
-          return closest_on_tetrahedron(p).mask == 0xFu ? EncloseVerdict::Intersecting
-                                                        : EncloseVerdict::Unsure;
+        // Tetrahedron (p[0], p[1], p[2], w). The origin's barycentric coordinate for vertex k
+        // is volume[k] / (their sum), volume[k] the signed volume with vertex k replaced by the
+        // origin. The origin was on w's side of the old face (p[0], p[1], p[2]) when w was
+        // sought, so volume[3] gives the orientation; a face whose volume has the other sign
+        // has the origin beyond it, and its opposite vertex goes.
+        const S volume[4] = {-p[1].dot(p[2].cross(w)), p[0].dot(p[2].cross(w)),
+                             -p[0].dot(p[1].cross(w)), p[0].dot(p[1].cross(p[2]))};
+        const S orientation = volume[3];
+        if (volume[0] * orientation < S(0)) {
+          triangle_with(1, 2);
+          break;
         }
+        if (volume[2] * orientation < S(0)) {
+          triangle_with(0, 1);
+          break;
+        }
+        if (volume[1] * orientation < S(0)) {
+          triangle_with(2, 0);
+          break;
+        }
+        // Enclosed by the rounded volumes; confirm each beyond its error, or leave it undecided.
+        const S certain[4] = {-certain_volume(p[1], p[2], w), certain_volume(p[0], p[2], w),
+                              -certain_volume(p[0], p[1], w), certain_volume(p[0], p[1], p[2])};
+        const bool positive =
+            certain[0] > S(0) && certain[1] > S(0) && certain[2] > S(0) && certain[3] > S(0);
+        const bool negative =
+            certain[0] < S(0) && certain[1] < S(0) && certain[2] < S(0) && certain[3] < S(0);
+        if (positive || negative) {
+          directions[3] = wdir;
+          count = 4;
+          return EncloseVerdict::Intersecting;
+        }
+        return EncloseVerdict::Unsure;
       }
     }
     if (!(d.squaredNorm() > S(0))) return EncloseVerdict::Unsure;  // the origin on the feature

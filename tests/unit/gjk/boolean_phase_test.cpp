@@ -1,0 +1,162 @@
+// The first phase of the boolean test (gjk.hpp, enclose_origin) claims "intersecting" only when
+// certain_volume() signs all four barycentric volumes of its tetrahedron. These tests check that
+// predicate against exact integer arithmetic, and the whole boolean test on pairs whose Minkowski
+// difference is flat or a sliver, where a rounded volume has no reliable sign.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "mink/mink.hpp"
+#include "oracle/brute_force.hpp"
+#include "oracle/random.hpp"
+
+namespace {
+
+using mink::Pose;
+using mink::Vec3;
+
+__extension__ typedef __int128 Int;  // GCC and Clang on 64-bit targets
+
+/// x . (y x z) exactly, for integer coordinates below 2^30 (products stay below 2^92).
+Int exact_volume(const std::int64_t x[3], const std::int64_t y[3], const std::int64_t z[3]) {
+  const Int c0 = Int(y[1]) * z[2] - Int(y[2]) * z[1];
+  const Int c1 = Int(y[2]) * z[0] - Int(y[0]) * z[2];
+  const Int c2 = Int(y[0]) * z[1] - Int(y[1]) * z[0];
+  return Int(x[0]) * c0 + Int(x[1]) * c1 + Int(x[2]) * c2;
+}
+
+Vec3 to_vec(const std::int64_t p[3], double scale) {
+  return Vec3(double(p[0]) * scale, double(p[1]) * scale, double(p[2]) * scale);
+}
+
+int sign(Int v) {
+  return v > 0 ? 1 : (v < 0 ? -1 : 0);
+}
+int sign(double v) {
+  return v > 0 ? 1 : (v < 0 ? -1 : 0);
+}
+
+// Integer points below 2^30, so the double products round. Half the cases are random; the other
+// half are nearly flat: y = x + e (e up to 2^10) and z = x + y + f (f in {-1, 0, 1}^3), whose
+// exact volume x . (e x f) lies between 0 and about 2^40, across the filter's bound (about 8 eps
+// times 2^90). certain_volume() must either give the exact sign or say 0 (not certain), never
+// the wrong sign, and it must sign random tetrahedra, or the first phase would decide nothing.
+// Scaled by powers of two (exactly) from 2^-300 to 2^300, so the bound must hold away from 1 too.
+TEST(BooleanPhase, CertainVolumeNeverGivesTheWrongSign) {
+  oracle::Rng rng(4242);
+  const int kMax = 1 << 28;
+  int random_signed = 0, random_count = 0, flat_signed = 0, flat_unsigned = 0;
+  for (int i = 0; i < 60000; ++i) {
+    std::int64_t x[3], y[3], z[3];
+    const bool flat = i % 2 == 1;
+    const int spread = 1 << rng.integer(0, 10);
+    for (int k = 0; k < 3; ++k) {
+      x[k] = rng.integer(-kMax, kMax);
+      y[k] = flat ? x[k] + rng.integer(-spread, spread) : rng.integer(-kMax, kMax);
+      z[k] = flat ? x[k] + y[k] + rng.integer(-1, 1) : rng.integer(-kMax, kMax);
+    }
+    const double scale = std::ldexp(1.0, rng.integer(-300, 300));
+    const double got =
+        mink::detail::certain_volume(to_vec(x, scale), to_vec(y, scale), to_vec(z, scale));
+    const Int exact = exact_volume(x, y, z);
+    if (got != 0.0) {
+      ASSERT_EQ(sign(got), sign(exact)) << "case " << i << ": wrong sign";
+    }
+    if (flat) {
+      flat_signed += got != 0.0;
+      flat_unsigned += got == 0.0;
+    } else {
+      ++random_count;
+      random_signed += got != 0.0;
+    }
+  }
+  // A random tetrahedron of the cube is far from flat but for a few in ten thousand.
+  EXPECT_GT(random_signed, random_count * 99 / 100);
+  // The nearly flat ones straddle the bound: both outcomes occur, so the sign check above saw
+  // volumes just beyond the bound.
+  EXPECT_GT(flat_signed, 1000);
+  EXPECT_GT(flat_unsigned, 1000);
+}
+
+TEST(BooleanPhase, CertainVolumeRefusesNonFiniteAndUnderflow) {
+  const Vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  EXPECT_EQ(mink::detail::certain_volume(x, y, z), 1.0);
+  EXPECT_EQ(mink::detail::certain_volume(y, x, z), -1.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(mink::detail::certain_volume(Vec3(nan, 0, 0), y, z), 0.0);
+  EXPECT_EQ(mink::detail::certain_volume(Vec3(inf, 0, 0), y, z), 0.0);
+  EXPECT_EQ(mink::detail::certain_volume(Vec3(1e200, 0, 0), Vec3(0, 1e200, 0), z), 0.0);
+  // Products below the normal range carry absolute, not relative, rounding: not certain.
+  EXPECT_EQ(
+      mink::detail::certain_volume(Vec3(1e-110, 0, 0), Vec3(0, 1e-110, 0), Vec3(0, 0, 1e-110)),
+      0.0);
+  EXPECT_EQ(mink::detail::certain_volume(Vec3(1e-90, 0, 0), Vec3(0, 1e-90, 0), Vec3(0, 0, 1e-90)),
+            1e-270);
+}
+
+/// The boolean test against brute force over the Minkowski difference of the points, placed in
+/// the world in long double (far from the origin, double world coordinates would be off by more
+/// than the thresholds below).
+void expect_boolean_matches_brute_force(const std::vector<Vec3>& a_points, const Pose& pa,
+                                        const std::vector<Vec3>& b_points, const Pose& pb) {
+  const auto a = mink::Polytope::make(a_points);
+  const auto b = mink::Polytope::make(b_points);
+  ASSERT_TRUE(a && b);
+  std::vector<oracle::V3> wa, wb;
+  for (const Vec3& p : a_points)
+    wa.push_back(oracle::widen(pa.rotation) * oracle::widen(p) + oracle::widen(pa.translation));
+  for (const Vec3& p : b_points)
+    wb.push_back(oracle::widen(pb.rotation) * oracle::widen(p) + oracle::widen(pb.translation));
+  const double distance = double(oracle::polytope_pair(wa, wb).distance);
+  const auto got = mink::intersect(*a, pa, *b, pb);
+  ASSERT_NE(got.status, mink::Status::InvalidInput);
+  // Touching counts as intersecting up to 1e-12 of the size (the sum of the bounding radii, about
+  // 3 here). Closer than 1e-12 must intersect; farther than 1e-11 must not; between, either.
+  if (distance > 1e-11) {
+    EXPECT_FALSE(got.intersect) << "distance " << distance;
+  }
+  if (distance <= 1e-12) {
+    EXPECT_TRUE(got.intersect) << "distance " << distance;
+  }
+}
+
+// Flat pairs: both polytopes in one plane, so A - B is flat and every tetrahedron of the first
+// phase is degenerate; the origin lies in that plane (overlapping or not) or just off it. Slivers:
+// one polytope flat, the other a needle across its plane. Random in-plane rotations, far from
+// the world origin too.
+TEST(BooleanPhase, FlatAndSliverPairsMatchBruteForce) {
+  const int n = oracle::sweep_count(600);
+  int overlapping = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = 777000 + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    oracle::Rng rng(seed);
+    std::vector<Vec3> a_points, b_points;
+    const int na = rng.integer(3, 8), nb = rng.integer(1, 8);
+    for (int k = 0; k < na; ++k)
+      a_points.push_back(Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), 0));
+    const bool sliver = i % 2 == 1;
+    for (int k = 0; k < nb; ++k)
+      b_points.push_back(
+          sliver ? Vec3(1e-9 * rng.uniform(-1, 1), 1e-9 * rng.uniform(-1, 1), rng.uniform(-1, 1))
+                 : Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), 0));
+    const Vec3 offset = rng.chance(0.3) ? Vec3(1e6, -2e6, 5e5) : Vec3::Zero();
+    const mink::Quat turn(Eigen::AngleAxisd(rng.uniform(0, 6.3), Vec3::UnitZ()));
+    const mink::Quat tilt = rng.rotation();
+    const Vec3 shift(rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2),
+                     rng.chance(0.5) ? 0.0 : rng.uniform(-1e-10, 1e-10));
+    const Pose pa = Pose::from(offset, tilt);
+    const Pose pb = Pose::from(offset + tilt * shift, tilt * turn);
+    expect_boolean_matches_brute_force(a_points, pa, b_points, pb);
+    overlapping +=
+        mink::intersect(*mink::Polytope::make(a_points), pa, *mink::Polytope::make(b_points), pb)
+            .intersect;
+  }
+  // Both answers occur often enough for the sweep to test both.
+  EXPECT_GT(overlapping, n / 10);
+  EXPECT_LT(overlapping, n * 9 / 10);
+}
+
+}  // namespace
