@@ -90,7 +90,8 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const S radius_a = a.core_radius(), radius_b = b.core_radius();
   const S size = a.bounding_radius() + b.bounding_radius();
-  const auto gjk = detail::run_gjk_distance(diff, radius_a + radius_b, size, tolerances, cache);
+  const auto gjk = detail::run_gjk_distance(diff, radius_a + radius_b, size, tolerances, cache,
+                                            /*enclose_first=*/true);
   result.status = gjk.status;
   result.iterations = gjk.iterations;
   if (gjk.status == Status::InvalidInput) {

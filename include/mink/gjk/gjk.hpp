@@ -92,180 +92,6 @@ struct GjkOutcome {
   int iterations = 0;
 };
 
-/// Runs GJK between the cores of a and b until the distance converges; `radius` is the sum of the
-/// shapes' radii and `size` the sum of their bounding radii. Status is Separated or Intersecting
-/// for the *full* shapes (cores within `radius`, touching within tolerance counts),
-/// IterationLimit, or InvalidInput when the arithmetic overflowed (kOverflowError).
-template <ConvexShape A, ConvexShape B>
-GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff,
-                                                typename A::Scalar radius, typename A::Scalar size,
-                                                const TolerancesT<typename A::Scalar>& tol,
-                                                GjkCacheT<typename A::Scalar>* cache) {
-  using S = typename A::Scalar;
-  GjkOutcome<S> out;
-  // Two buffers: the sub-algorithm writes the reduced simplex into the other one, so that going
-  // back to the previous simplex (no progress) costs nothing.
-  SimplexT<S> buffers[2];
-  int current = 0;
-  constexpr int kMaxRestarts = 8;
-  int restarts = 0;
-  SimplexT<S> saved;  // best simplex before a restart
-  Vec3T<S> saved_v = Vec3T<S>::Zero();
-  S saved_sq = std::numeric_limits<S>::infinity();
-  const S touch = tol.relative * size;  // core distances up to this count as touching
-  const S inside = radius + touch;
-
-  Vec3T<S> v;
-  bool v_in_set = false;  // v is a point of A - B (so |v| bounds the distance from above)
-  if (cache_is_usable(cache)) {
-    // Rebuild the previous simplex from its directions: fresh support points of the current poses.
-    for (int i = 0; i < cache->size; ++i) {
-      SimplexVertexT<S> vertex;
-      diff.support(cache->directions[i], vertex);
-      ++out.iterations;
-      bool duplicate = false;
-      SimplexT<S>& simplex = buffers[current];
-      for (int k = 0; k < simplex.size; ++k) duplicate |= simplex.vertices[k].w == vertex.w;
-      if (!duplicate) simplex.vertices[simplex.size++] = vertex;
-    }
-    v = reduce_to_closest_cold(buffers[current], buffers[current]);
-    v_in_set = true;
-    out.upper = v.norm();
-  } else {
-    // Start along the line of centres: A's farthest point towards B minus B's towards A.
-    v = -diff.translation;
-    if (!(v.squaredNorm() > S(0))) v = Vec3T<S>::UnitX();
-  }
-
-  while (true) {
-    SimplexT<S>& simplex = buffers[current];
-    const S v_sq = v.squaredNorm();
-    if (v_in_set && (simplex.size == 4 || v_sq <= touch * touch)) {
-      out.status = Status::Intersecting;
-      break;
-    }
-    if (v_in_set && out.iterations >= tol.max_iterations) {
-      out.status = Status::IterationLimit;
-      break;
-    }
-    SimplexVertexT<S> vertex;
-    diff.support(-v, vertex);
-    ++out.iterations;
-    const S vw = v.dot(vertex.w);
-    const S v_length = std::sqrt(v_sq);
-    if (vw / v_length > out.lower) {
-      out.lower = vw / v_length;
-      out.lower_v = v;
-    }
-    if (v_in_set) {
-      // Bounds met: |v| - v.w/|v| <= tol * size, i.e. gap = |v|^2 - v.w <= tol * size * |v|.
-      // Relative to the shapes' size, not to the distance: far apart shapes still get their
-      // distance to within tol * size (or to the rounding floor, which the no-progress test
-      // below catches). A NaN makes both comparisons false instead of exiting. Not squared:
-      // (tol * size)^2 |v|^2 underflows for shapes of 1e-100, and the loop then ran on to a false
-      // rounding floor, 0.5% short.
-      const S gap = v_sq - vw;
-      if (gap <= S(0) || gap <= tol.relative * size * v_length) {
-        out.status = Status::Separated;
-        break;
-      }
-      bool duplicate = false;
-      for (int k = 0; k < simplex.size; ++k) duplicate |= simplex.vertices[k].w == vertex.w;
-      if (duplicate) {
-        out.status = Status::Separated;
-        break;
-      }
-    }
-    // Append w past the end, reduce into the other buffer; `simplex` itself stays as it was.
-    simplex.vertices[simplex.size] = vertex;
-    ++simplex.size;
-    SimplexT<S>& reduced = buffers[current ^ 1];
-    const Vec3T<S> next = reduce_to_closest(simplex, reduced);
-    --simplex.size;
-    const S next_sq = next.squaredNorm();
-    if (!(next_sq <= std::numeric_limits<S>::max())) {
-      // NaN or infinity: finite input whose products overflow (coordinates near 1e154 in
-      // double). Nothing trustworthy can be said.
-      out.status = Status::InvalidInput;
-      break;
-    }
-    if (v_in_set && next_sq >= v_sq) {
-      // No progress although the bounds may not have met. This happens when one shape is curved
-      // and the other contributes a flat feature (a polytope edge against an ellipsoid): the
-      // simplex mixes support points of A taken at different iterations, so the convex
-      // combination sags inside A's curved surface, and the new w alone cannot lift it within
-      // rounding. Any a - b with a on A and b on B is a point of A - B, so recombine: pair the
-      // newest support point of A with every support point of B in the simplex (and the other
-      // way round). One of those simplices holds the closest point without the sag. If neither
-      // gets closer, this is the rounding floor and the previous simplex is the answer.
-      Vec3T<S> best_v = v;
-      S best_sq = v_sq;
-      for (int side = 0; side < 2; ++side) {
-        SimplexT<S>& trial = buffers[current ^ 1];
-        trial.size = 0;
-        for (int k = 0; k <= simplex.size; ++k) {
-          SimplexVertexT<S> mixed = k < simplex.size ? simplex.vertices[k] : vertex;
-          if (side == 0)
-            mixed.a = vertex.a;
-          else
-            mixed.b = vertex.b;
-          mixed.w = mixed.a - mixed.b;
-          bool repeated = false;
-          for (int m = 0; m < trial.size; ++m) repeated |= trial.vertices[m].w == mixed.w;
-          if (!repeated && trial.size < 4) trial.vertices[trial.size++] = mixed;
-        }
-        const Vec3T<S> candidate = reduce_to_closest_cold(trial, trial);
-        const S candidate_sq = candidate.squaredNorm();
-        if (candidate_sq < best_sq) {
-          best_sq = candidate_sq;
-          best_v = candidate;
-          current ^= 1;  // the trial buffer becomes the simplex
-        }
-        if (best_sq < v_sq) break;
-      }
-      if (!(best_sq < v_sq)) {
-        // Still stuck with the bounds apart: restart from a fresh simplex along v, which sheds
-        // the crowded points; keep the best answer seen in case the restart does no better.
-        if (restarts < kMaxRestarts && v_sq - vw > tol.relative * size * std::sqrt(v_sq)) {
-          ++restarts;
-          if (v_sq < saved_sq) {
-            saved = simplex;
-            saved_v = v;
-            saved_sq = v_sq;
-          }
-          simplex.size = 0;
-          v_in_set = false;
-          continue;
-        }
-        out.status = Status::Separated;
-        break;
-      }
-      v = best_v;
-      continue;
-    }
-    current ^= 1;
-    v = next;
-    v_in_set = true;
-  }
-  if (saved_sq < std::numeric_limits<S>::infinity() &&
-      (!v_in_set || !(v.squaredNorm() < saved_sq)) && out.status != Status::Intersecting) {
-    buffers[current] = saved;
-    v = saved_v;
-    v_in_set = true;
-  }
-  const SimplexT<S>& simplex = buffers[current];
-  out.simplex = simplex;
-  out.v = v_in_set ? v : Vec3T<S>::Zero();
-  if (v_in_set) out.upper = v.norm();
-  if (!(out.upper <= std::numeric_limits<S>::max()) && v_in_set) out.status = Status::InvalidInput;
-  if (out.status == Status::Separated && out.upper <= inside) out.status = Status::Intersecting;
-  // Cores that meet have distance 0; cores apart but within the radii keep their bounds.
-  if (out.status == Status::Intersecting && !(out.upper > touch)) out.lower = S(0);
-  save_cache(
-      cache, simplex.size, [&simplex](int i) { return simplex.vertices[i].dir; }, v);
-  return out;
-}
-
 /// What the cheap first phase of the boolean test found (enclose_origin()).
 enum class EncloseVerdict { Separated, Intersecting, Unsure };
 
@@ -305,10 +131,14 @@ template <class S>
 /// simplex, `max_supports` spent) is Unsure, and the distance-based loop decides. Steering needs
 /// no such care: a wrong turn costs a support call, not a wrong answer. `iterations` counts the
 /// support calls; `directions[0..count)` are those of the final simplex, for the warm-start cache.
+///
+/// `first` (optional): the support point along diff.translation, already computed (and counted in
+/// `iterations`) by the caller, which is the first one this phase asks for.
 template <ConvexShape A, ConvexShape B>
 EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scalar inside_sq,
                               int max_supports, int& iterations,
-                              Vec3T<typename A::Scalar> (&directions)[4], int& count) {
+                              Vec3T<typename A::Scalar> (&directions)[4], int& count,
+                              const Vec3T<typename A::Scalar>* first = nullptr) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
   // The simplex, oldest first; the support point of this iteration, w, is not stored until the
@@ -320,8 +150,14 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
   count = 0;
 
   while (iterations < max_supports) {
-    const V w = diff.support_point(d);
-    ++iterations;
+    V w;
+    if (first) {
+      w = *first;
+      first = nullptr;
+    } else {
+      w = diff.support_point(d);
+      ++iterations;
+    }
     const S wd = w.dot(d);
     if (!(wd >= S(0))) {
       // The support plane normal to d passes short of the origin: separated by -wd / |d|. It
@@ -440,6 +276,221 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
 
 /// Support calls the first phase of the boolean test may spend before the loop takes over.
 inline constexpr int kEnclosePhaseSupports = 24;
+
+/// enclose_origin() for distance(), out of line, so that the distance loop's code stays as small
+/// as it was. True when the origin is proved enclosed. `first`: the support point along
+/// diff.translation, already computed.
+template <ConvexShape A, ConvexShape B>
+[[gnu::noinline]] bool enclose_first_phase(const CoreDifference<A, B>& diff,
+                                           typename A::Scalar inside_sq, int max_supports,
+                                           int& iterations,
+                                           Vec3T<typename A::Scalar> (&directions)[4], int& count,
+                                           const Vec3T<typename A::Scalar>& first) {
+  return enclose_origin(diff, inside_sq, max_supports, iterations, directions, count, &first) ==
+         EncloseVerdict::Intersecting;
+}
+
+/// Runs GJK between the cores of a and b until the distance converges; `radius` is the sum of the
+/// shapes' radii and `size` the sum of their bounding radii. Status is Separated or Intersecting
+/// for the *full* shapes (cores within `radius`, touching within tolerance counts),
+/// IterationLimit, or InvalidInput when the arithmetic overflowed (kOverflowError).
+///
+/// `enclose_first` (distance() sets it): for cores with no radius and no warm start whose first
+/// support point (along the line of centres) does not already prove them apart, the boolean
+/// test's first phase runs on from that point (enclose_first_phase()). It proves most
+/// overlapping pairs enclosed at a fraction of this loop's cost; the outcome then has an empty
+/// simplex, which distance() does not need (it reports no points for them) and contact() does
+/// (EPA starts from the simplex with its witness points), hence the flag. When it proves nothing,
+/// the loop goes on from the same first point.
+template <ConvexShape A, ConvexShape B>
+GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff,
+                                                typename A::Scalar radius, typename A::Scalar size,
+                                                const TolerancesT<typename A::Scalar>& tol,
+                                                GjkCacheT<typename A::Scalar>* cache,
+                                                bool enclose_first = false) {
+  using S = typename A::Scalar;
+  GjkOutcome<S> out;
+  // Two buffers: the sub-algorithm writes the reduced simplex into the other one, so that going
+  // back to the previous simplex (no progress) costs nothing.
+  SimplexT<S> buffers[2];
+  int current = 0;
+  constexpr int kMaxRestarts = 8;
+  int restarts = 0;
+  SimplexT<S> saved;  // best simplex before a restart
+  Vec3T<S> saved_v = Vec3T<S>::Zero();
+  S saved_sq = std::numeric_limits<S>::infinity();
+  const S touch = tol.relative * size;  // core distances up to this count as touching
+  const S inside = radius + touch;
+
+  Vec3T<S> v;
+  bool v_in_set = false;  // v is a point of A - B (so |v| bounds the distance from above)
+  // The boolean first phase is tried once, from the first support point (see above).
+  bool try_enclose = enclose_first && radius == S(0) && !cache_is_usable(cache) &&
+                     diff.translation.squaredNorm() > S(0);
+  if (cache_is_usable(cache)) {
+    // Rebuild the previous simplex from its directions: fresh support points of the current poses.
+    for (int i = 0; i < cache->size; ++i) {
+      SimplexVertexT<S> vertex;
+      diff.support(cache->directions[i], vertex);
+      ++out.iterations;
+      bool duplicate = false;
+      SimplexT<S>& simplex = buffers[current];
+      for (int k = 0; k < simplex.size; ++k) duplicate |= simplex.vertices[k].w == vertex.w;
+      if (!duplicate) simplex.vertices[simplex.size++] = vertex;
+    }
+    v = reduce_to_closest_cold(buffers[current], buffers[current]);
+    v_in_set = true;
+    out.upper = v.norm();
+  } else {
+    // Start along the line of centres: A's farthest point towards B minus B's towards A.
+    v = -diff.translation;
+    if (!(v.squaredNorm() > S(0))) v = Vec3T<S>::UnitX();
+  }
+
+  while (true) {
+    SimplexT<S>& simplex = buffers[current];
+    const S v_sq = v.squaredNorm();
+    if (v_in_set && (simplex.size == 4 || v_sq <= touch * touch)) {
+      out.status = Status::Intersecting;
+      break;
+    }
+    if (v_in_set && out.iterations >= tol.max_iterations) {
+      out.status = Status::IterationLimit;
+      break;
+    }
+    SimplexVertexT<S> vertex;
+    diff.support(-v, vertex);
+    ++out.iterations;
+    const S vw = v.dot(vertex.w);
+    const S v_length = std::sqrt(v_sq);
+    if (try_enclose) {
+      try_enclose = false;
+      Vec3T<S> directions[4];
+      int count = 0;
+      if (!(vw > touch * v_length) &&
+          enclose_first_phase(diff, touch * touch,
+                              std::min(kEnclosePhaseSupports, tol.max_iterations), out.iterations,
+                              directions, count, vertex.w)) {
+        out.status = Status::Intersecting;
+        out.upper = S(0);
+        save_cache(
+            cache, count, [&directions](int i) { return directions[i]; },
+            Vec3T<S>(Vec3T<S>::Zero()));
+        return out;
+      }
+    }
+    if (vw / v_length > out.lower) {
+      out.lower = vw / v_length;
+      out.lower_v = v;
+    }
+    if (v_in_set) {
+      // Bounds met: |v| - v.w/|v| <= tol * size, i.e. gap = |v|^2 - v.w <= tol * size * |v|.
+      // Relative to the shapes' size, not to the distance: far apart shapes still get their
+      // distance to within tol * size (or to the rounding floor, which the no-progress test
+      // below catches). A NaN makes both comparisons false instead of exiting. Not squared:
+      // (tol * size)^2 |v|^2 underflows for shapes of 1e-100, and the loop then ran on to a false
+      // rounding floor, 0.5% short.
+      const S gap = v_sq - vw;
+      if (gap <= S(0) || gap <= tol.relative * size * v_length) {
+        out.status = Status::Separated;
+        break;
+      }
+      bool duplicate = false;
+      for (int k = 0; k < simplex.size; ++k) duplicate |= simplex.vertices[k].w == vertex.w;
+      if (duplicate) {
+        out.status = Status::Separated;
+        break;
+      }
+    }
+    // Append w past the end, reduce into the other buffer; `simplex` itself stays as it was.
+    simplex.vertices[simplex.size] = vertex;
+    ++simplex.size;
+    SimplexT<S>& reduced = buffers[current ^ 1];
+    const Vec3T<S> next = reduce_to_closest(simplex, reduced);
+    --simplex.size;
+    const S next_sq = next.squaredNorm();
+    if (!(next_sq <= std::numeric_limits<S>::max())) {
+      // NaN or infinity: finite input whose products overflow (coordinates near 1e154 in
+      // double). Nothing trustworthy can be said.
+      out.status = Status::InvalidInput;
+      break;
+    }
+    if (v_in_set && next_sq >= v_sq) {
+      // No progress although the bounds may not have met. This happens when one shape is curved
+      // and the other contributes a flat feature (a polytope edge against an ellipsoid): the
+      // simplex mixes support points of A taken at different iterations, so the convex
+      // combination sags inside A's curved surface, and the new w alone cannot lift it within
+      // rounding. Any a - b with a on A and b on B is a point of A - B, so recombine: pair the
+      // newest support point of A with every support point of B in the simplex (and the other
+      // way round). One of those simplices holds the closest point without the sag. If neither
+      // gets closer, this is the rounding floor and the previous simplex is the answer.
+      Vec3T<S> best_v = v;
+      S best_sq = v_sq;
+      for (int side = 0; side < 2; ++side) {
+        SimplexT<S>& trial = buffers[current ^ 1];
+        trial.size = 0;
+        for (int k = 0; k <= simplex.size; ++k) {
+          SimplexVertexT<S> mixed = k < simplex.size ? simplex.vertices[k] : vertex;
+          if (side == 0)
+            mixed.a = vertex.a;
+          else
+            mixed.b = vertex.b;
+          mixed.w = mixed.a - mixed.b;
+          bool repeated = false;
+          for (int m = 0; m < trial.size; ++m) repeated |= trial.vertices[m].w == mixed.w;
+          if (!repeated && trial.size < 4) trial.vertices[trial.size++] = mixed;
+        }
+        const Vec3T<S> candidate = reduce_to_closest_cold(trial, trial);
+        const S candidate_sq = candidate.squaredNorm();
+        if (candidate_sq < best_sq) {
+          best_sq = candidate_sq;
+          best_v = candidate;
+          current ^= 1;  // the trial buffer becomes the simplex
+        }
+        if (best_sq < v_sq) break;
+      }
+      if (!(best_sq < v_sq)) {
+        // Still stuck with the bounds apart: restart from a fresh simplex along v, which sheds
+        // the crowded points; keep the best answer seen in case the restart does no better.
+        if (restarts < kMaxRestarts && v_sq - vw > tol.relative * size * std::sqrt(v_sq)) {
+          ++restarts;
+          if (v_sq < saved_sq) {
+            saved = simplex;
+            saved_v = v;
+            saved_sq = v_sq;
+          }
+          simplex.size = 0;
+          v_in_set = false;
+          continue;
+        }
+        out.status = Status::Separated;
+        break;
+      }
+      v = best_v;
+      continue;
+    }
+    current ^= 1;
+    v = next;
+    v_in_set = true;
+  }
+  if (saved_sq < std::numeric_limits<S>::infinity() &&
+      (!v_in_set || !(v.squaredNorm() < saved_sq)) && out.status != Status::Intersecting) {
+    buffers[current] = saved;
+    v = saved_v;
+    v_in_set = true;
+  }
+  const SimplexT<S>& simplex = buffers[current];
+  out.simplex = simplex;
+  out.v = v_in_set ? v : Vec3T<S>::Zero();
+  if (v_in_set) out.upper = v.norm();
+  if (!(out.upper <= std::numeric_limits<S>::max()) && v_in_set) out.status = Status::InvalidInput;
+  if (out.status == Status::Separated && out.upper <= inside) out.status = Status::Intersecting;
+  // Cores that meet have distance 0; cores apart but within the radii keep their bounds.
+  if (out.status == Status::Intersecting && !(out.upper > touch)) out.lower = S(0);
+  save_cache(
+      cache, simplex.size, [&simplex](int i) { return simplex.vertices[i].dir; }, v);
+  return out;
+}
 
 template <class S>
 struct GjkBooleanOutcome {
