@@ -24,7 +24,10 @@
 /// points are the job of EPA (a separate query).
 ///
 /// Pairs of spheres, capsules, points and segments (and their Rounded versions) take a closed form
-/// instead of GJK (segment_cores.hpp): exact to rounding, 0 iterations.
+/// instead of GJK (segment_cores.hpp): exact to rounding, 0 iterations. Overlapping pairs of boxes
+/// (and rounded boxes) that the separating axis test proves so (query/box_box.hpp) report 0
+/// iterations too; for other cores with no radius, overlapping pairs are mostly proved by the
+/// boolean test's first phase (gjk.hpp, enclose_origin()).
 ///
 /// Cost: no allocation, no global state, reentrant.
 #pragma once
@@ -32,6 +35,7 @@
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/separation.hpp"
+#include "mink/query/box_box.hpp"
 
 namespace mink {
 
@@ -90,8 +94,23 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const S radius_a = a.core_radius(), radius_b = b.core_radius();
   const S size = a.bounding_radius() + b.bounding_radius();
+  constexpr bool kBoxes = detail::BoxCore<A>::value && detail::BoxCore<B>::value;
+  if constexpr (kBoxes) {
+    // Two boxes: the separating axis test proves most overlapping pairs in a few flops, as in
+    // intersect(); the rest (apart, or unsure) go to GJK.
+    const auto verdict = detail::box_box_verdict(
+        detail::BoxCore<A>::half_extents(a), detail::BoxCore<B>::half_extents(b), diff.rotation,
+        diff.translation, radius_a + radius_b + tolerances.relative * size);
+    if (verdict == detail::BoxBoxVerdict::Overlapping) {
+      result.status = Status::Intersecting;
+      result.intersect = true;
+      return result;
+    }
+  }
+  // Overlapping cores with no radius: the boolean test's first phase proves most of them enclosed
+  // for less than the distance loop (run_gjk_distance()); boxes have had the test above.
   const auto gjk = detail::run_gjk_distance(diff, radius_a + radius_b, size, tolerances, cache,
-                                            /*enclose_first=*/true);
+                                            /*enclose_first=*/!kBoxes);
   result.status = gjk.status;
   result.iterations = gjk.iterations;
   if (gjk.status == Status::InvalidInput) {
