@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <limits>
 
 #include "mink/gjk/signed_volumes.hpp"
@@ -95,15 +94,21 @@ struct GjkOutcome {
 /// What the cheap first phase of the boolean test found (enclose_origin()).
 enum class EncloseVerdict { Separated, Intersecting, Unsure };
 
-/// The signed volume det(x, y, z) = x . (y x z) of the tetrahedron (origin, x, y, z) when its
-/// sign is certain, else 0. Certain: the computed value exceeds its rounding error bound, about
-/// 5 eps times the permanent (the same sum with every term taken absolute; the bound used is
-/// 8 eps), the static filter of Shewchuk's orient3d with the origin as the fourth point, which
-/// needs no subtraction of the inputs. Underflow (a permanent below min / eps), overflow and
-/// NaN give 0.
+/// The signed volume det(x, y, z) = x . (y x z) of the tetrahedron (origin, x, y, z), and whether
+/// its sign is certain.
 template <class S>
-[[gnu::always_inline]] inline S certain_volume(const Vec3T<S>& x, const Vec3T<S>& y,
-                                               const Vec3T<S>& z) {
+struct OriginVolume {
+  S value;
+  /// The computed value exceeds its rounding error bound, about 5 eps times the permanent (the
+  /// same sum with every term taken absolute; the bound used is 8 eps): the static filter of
+  /// Shewchuk's orient3d with the origin as the fourth point, which needs no subtraction of the
+  /// inputs. False on underflow (a permanent below min / eps), overflow and NaN.
+  bool certain;
+};
+
+template <class S>
+[[gnu::always_inline]] inline OriginVolume<S> origin_volume(const Vec3T<S>& x, const Vec3T<S>& y,
+                                                            const Vec3T<S>& z) {
   const S yz0 = y[1] * z[2], zy0 = y[2] * z[1];
   const S yz1 = y[2] * z[0], zy1 = y[0] * z[2];
   const S yz2 = y[0] * z[1], zy2 = y[1] * z[0];
@@ -113,8 +118,7 @@ template <class S>
                       std::abs(x[2]) * (std::abs(yz2) + std::abs(zy2));
   constexpr S kEps = std::numeric_limits<S>::epsilon();
   constexpr S kSmallest = std::numeric_limits<S>::min() / kEps;
-  const bool certain = std::abs(det) > S(8) * kEps * permanent && permanent >= kSmallest;
-  return certain ? det : S(0);
+  return {det, std::abs(det) > S(8) * kEps * permanent && permanent >= kSmallest};
 }
 
 /// The first phase of the boolean test on cores with no radius: GJK that steers by the simplex
@@ -125,7 +129,7 @@ template <class S>
 ///
 /// It only says what it can prove: Separated when a support plane leaves the origin more than
 /// `inside` away (as the distance loop does), Intersecting when the four barycentric volumes of
-/// its tetrahedron have one sign, each beyond its rounding error (certain_volume()): the origin
+/// its tetrahedron have one sign, each beyond its rounding error (origin_volume()): the origin
 /// is then strictly inside the tetrahedron of the computed support points, so within rounding of
 /// A - B. Anything else (a volume too small to sign, the origin near a face, a degenerate
 /// simplex, `max_supports` spent) is Unsure, and the distance-based loop decides. Steering needs
@@ -239,8 +243,10 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
         // origin. The origin was on w's side of the old face (p[0], p[1], p[2]) when w was
         // sought, so volume[3] gives the orientation; a face whose volume has the other sign
         // has the origin beyond it, and its opposite vertex goes.
-        const S volume[4] = {-p[1].dot(p[2].cross(w)), p[0].dot(p[2].cross(w)),
-                             -p[0].dot(p[1].cross(w)), p[0].dot(p[1].cross(p[2]))};
+        const OriginVolume<S> faces[4] = {
+            origin_volume(p[1], p[2], w), origin_volume(p[0], p[2], w),
+            origin_volume(p[0], p[1], w), origin_volume(p[0], p[1], p[2])};
+        const S volume[4] = {-faces[0].value, faces[1].value, -faces[2].value, faces[3].value};
         const S orientation = volume[3];
         if (volume[0] * orientation < S(0)) {
           triangle_with(1, 2);
@@ -255,13 +261,12 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
           break;
         }
         // Enclosed by the rounded volumes; confirm each beyond its error, or leave it undecided.
-        const S certain[4] = {-certain_volume(p[1], p[2], w), certain_volume(p[0], p[2], w),
-                              -certain_volume(p[0], p[1], w), certain_volume(p[0], p[1], p[2])};
-        const bool positive =
-            certain[0] > S(0) && certain[1] > S(0) && certain[2] > S(0) && certain[3] > S(0);
-        const bool negative =
-            certain[0] < S(0) && certain[1] < S(0) && certain[2] < S(0) && certain[3] < S(0);
-        if (positive || negative) {
+        const bool certain =
+            faces[0].certain && faces[1].certain && faces[2].certain && faces[3].certain;
+        const bool one_sign =
+            (volume[0] > S(0) && volume[1] > S(0) && volume[2] > S(0) && volume[3] > S(0)) ||
+            (volume[0] < S(0) && volume[1] < S(0) && volume[2] < S(0) && volume[3] < S(0));
+        if (certain && one_sign) {
           directions[3] = wdir;
           count = 4;
           return EncloseVerdict::Intersecting;
@@ -325,9 +330,10 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
   Vec3T<S> v;
   bool v_in_set = false;  // v is a point of A - B (so |v| bounds the distance from above)
   // The boolean first phase is tried once, from the first support point (see above).
-  bool try_enclose = enclose_first && radius == S(0) && !cache_is_usable(cache) &&
-                     diff.translation.squaredNorm() > S(0);
-  if (cache_is_usable(cache)) {
+  const bool warm = cache_is_usable(cache);
+  bool try_enclose =
+      enclose_first && radius == S(0) && !warm && diff.translation.squaredNorm() > S(0);
+  if (warm) {
     // Rebuild the previous simplex from its directions: fresh support points of the current poses.
     for (int i = 0; i < cache->size; ++i) {
       SimplexVertexT<S> vertex;
