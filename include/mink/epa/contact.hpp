@@ -14,7 +14,9 @@
 /// difference otherwise: exact for spheres and capsules, no EPA. Only when the cores themselves
 /// meet does EPA (epa.hpp) run on them, and the radii are added to its depth. Two boxes (or
 /// rounded boxes) whose cores overlap skip GJK and EPA: the separating axis test
-/// (query/box_box.hpp) gives the same depth and normal to rounding, and `iterations` is 0.
+/// (query/box_box.hpp) gives the same depth and normal to rounding, and `iterations` is 0; so
+/// do boxes whose cores are apart with closest points that its best axis gives in closed form
+/// (box_box_closest()).
 ///
 /// Ties: when several normals are equally good the query returns one of them and sets
 /// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric
@@ -118,12 +120,28 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // Two boxes whose cores overlap: the separating axis test is EPA's depth and normal, exact
     // and in a fixed number of flops, and the deepest point of the manifold's clipping gives the
     // witness points (a point of B's deepest feature that lies over A's face, or the reverse, or
-    // the closest points of two crossing edges).
+    // the closest points of two crossing edges). Cores apart: the same axis gives most pairs
+    // their closest points in closed form (box_box_closest()).
     const PoseT<S> rel = pose_a.relative(pose_b);
+    const Vec3T<S>&ha = detail::BoxCore<A>::half_extents(a),
+          &hb = detail::BoxCore<B>::half_extents(b);
     // No bias towards face axes (the manifold's, for stable normals): the least overlap, exact.
-    const auto axis = detail::box_box_axis(detail::BoxCore<A>::half_extents(a),
-                                           detail::BoxCore<B>::half_extents(b), rel.rotation,
-                                           rel.translation, S(0));
+    const auto axis = detail::box_box_axis(ha, hb, rel.rotation, rel.translation, S(0));
+    Vec3T<S> on_a, on_b, normal;
+    S core_distance;
+    if (axis.overlap < -touch && detail::box_box_closest(ha, hb, rel.rotation, rel.translation,
+                                                         axis, on_a, on_b, normal, core_distance)) {
+      detail::contact_from_cores(on_a, on_b, normal, core_distance, radius_a, radius_b, inside,
+                                 result);
+      result.normal = pose_a.rotate(result.normal);
+      result.point_a = pose_a.apply(result.point_a);
+      result.point_b = pose_a.apply(result.point_b);
+      // The axis warm-starts GJK the next time, should the pair move out of closed form.
+      detail::save_cache(
+          cache, 1, [&normal](int) { return normal; }, normal);
+      result.status = result.intersect ? Status::Intersecting : Status::Separated;
+      return result;
+    }
     if (axis.overlap > touch) {
       // Features only where flat to rounding (1e-9): a rounded face tilted within a coarser
       // tolerance is moved out along its own normal, off the surface by up to r t^2 / 2, and

@@ -24,10 +24,12 @@
 /// points are the job of EPA (a separate query).
 ///
 /// Pairs of spheres, capsules, points and segments (and their Rounded versions) take a closed form
-/// instead of GJK (segment_cores.hpp): exact to rounding, 0 iterations. Overlapping pairs of boxes
-/// (and rounded boxes) that the separating axis test proves so (query/box_box.hpp) report 0
-/// iterations too; for other cores with no radius, overlapping pairs are mostly proved by the
-/// boolean test's first phase (gjk.hpp, enclose_origin()).
+/// instead of GJK (segment_cores.hpp): exact to rounding, 0 iterations. Pairs of boxes (and
+/// rounded boxes) report 0 iterations too when the separating axis test proves them overlapping,
+/// or when its best axis gives their closest points in closed form (a vertex, edge or face over a
+/// face, or two crossing edges: box_box_closest() in query/box_box.hpp). For other cores with no
+/// radius, overlapping pairs are mostly proved by the boolean test's first phase (gjk.hpp,
+/// enclose_origin()).
 ///
 /// Cost: no allocation, no global state, reentrant.
 #pragma once
@@ -97,14 +99,33 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   constexpr bool kBoxes = detail::BoxCore<A>::value && detail::BoxCore<B>::value;
   if constexpr (kBoxes) {
     // Two boxes: the separating axis test proves most overlapping pairs in a few flops, as in
-    // intersect(); the rest (apart, or unsure) go to GJK.
-    const auto verdict = detail::box_box_verdict(
-        detail::BoxCore<A>::half_extents(a), detail::BoxCore<B>::half_extents(b), diff.rotation,
-        diff.translation, radius_a + radius_b + tolerances.relative * size);
+    // intersect(), and its best axis gives most separated pairs their closest points in closed
+    // form (box_box_closest()); the rest go to GJK.
+    const Vec3T<S>&ha = detail::BoxCore<A>::half_extents(a),
+          &hb = detail::BoxCore<B>::half_extents(b);
+    const auto verdict = detail::box_box_verdict(ha, hb, diff.rotation, diff.translation,
+                                                 radius_a + radius_b + tolerances.relative * size);
     if (verdict == detail::BoxBoxVerdict::Overlapping) {
       result.status = Status::Intersecting;
       result.intersect = true;
       return result;
+    }
+    if (verdict == detail::BoxBoxVerdict::Separated) {
+      const auto axis = detail::box_box_axis(ha, hb, diff.rotation, diff.translation, S(0));
+      Vec3T<S> on_a, on_b, normal;
+      S core_distance;
+      if (detail::box_box_closest(ha, hb, diff.rotation, diff.translation, axis, on_a, on_b, normal,
+                                  core_distance)) {
+        result.status = Status::Separated;
+        result.distance = core_distance - radius_a - radius_b;
+        result.normal = pose_a.rotate(normal);
+        result.point_a = pose_a.apply(Vec3T<S>(on_a + radius_a * normal));
+        result.point_b = pose_a.apply(Vec3T<S>(on_b - radius_b * normal));
+        // The axis warm-starts GJK the next time, should the pair move out of closed form.
+        detail::save_cache(
+            cache, 1, [&normal](int) { return normal; }, normal);
+        return result;
+      }
     }
   }
   // Overlapping cores with no radius: the boolean test's first phase proves most of them enclosed

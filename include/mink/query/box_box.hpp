@@ -1,7 +1,8 @@
 /// @file box_box.hpp
 /// Two boxes (Box, or Rounded<Box>: the run-time Shape's box core) need no GJK or EPA while the
 /// separating axis test can answer: intersect() asks box_box_verdict(), contact() and manifold()
-/// box_box_axis() when the cores overlap.
+/// box_box_axis() when the cores overlap, distance() and contact() box_box_closest() when they
+/// are apart.
 ///
 /// Penetration depth and normal of two overlapping boxes by the separating axis test: the 3 + 3
 /// face axes and the 9 edge-edge cross products. For two boxes the least overlap over these
@@ -14,6 +15,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "mink/gjk/segment_cores.hpp"
 #include "mink/math/pose.hpp"
 #include "mink/shapes/box.hpp"
 #include "mink/support/rounded.hpp"
@@ -100,6 +102,8 @@ template <class S>
 struct BoxBoxAxis {
   S overlap;        ///< least overlap (unit: length); negative when an axis separates the boxes
   Vec3T<S> normal;  ///< unit, in A's frame, from A towards B
+  /// 0..2: A's face axis; 3..5: B's face axis 0..2; 6 + 3 i + j: the edge axis e_i x r.col(j).
+  int index;
 };
 
 /// The separating-axis answer for box A (half extents ha) and box B (half extents hb) whose pose
@@ -138,7 +142,7 @@ BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S
   }
 
   // best: 0..2 A's face axis, 3..5 B's face axis 0..2, 6 + 3 i + j the edge axis e_i x r.col(j).
-  BoxBoxAxis<S> result{least, Vec3T<S>::Zero()};
+  BoxBoxAxis<S> result{least, Vec3T<S>::Zero(), best};
   if (best < 3) {
     result.normal[best] = sign_nonneg(t[best]);
   } else if (best < 6) {
@@ -197,6 +201,160 @@ BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3
     apart |= g > S(0);
   }
   return !apart && !degenerate ? BoxBoxVerdict::Overlapping : BoxBoxVerdict::Unsure;
+}
+
+/// The corner of a box (half extents h) farthest along d, except that a coordinate whose |d_k| is
+/// at most `tie` is a tie (the support feature is an edge or a face along it) and is taken as
+/// `towards_k` clamped to the box: the point of the support feature nearest to the line through
+/// `towards` along d, when d is orthogonal to the tied axes (the box's axes are orthonormal, so
+/// the coordinates separate). Its support value falls short of the maximum by at most
+/// 2 tie (h_0 + h_1 + h_2).
+template <class S>
+[[gnu::always_inline]] inline Vec3T<S> box_support_towards(const Vec3T<S>& h, const Vec3T<S>& d,
+                                                           const Vec3T<S>& towards, S tie) {
+  Vec3T<S> p;
+  for (int k = 0; k < 3; ++k)
+    p[k] = std::abs(d[k]) > tie ? sign_nonneg(d[k]) * h[k] : std::clamp(towards[k], -h[k], h[k]);
+  return p;
+}
+
+/// Support features within this (relative to a unit direction) of a tie count as ties.
+inline constexpr double kBoxTie = 1e-12;
+
+/// The closest points of A's and B's support edges along the edge axis `axis` (A's frame), when
+/// both lie inside their edges: two crossing edges, whose closest points differ along the axis
+/// only. False when an edge has no length, the support feature along the axis is a face (a tie),
+/// or a closest point is an end point.
+template <class S>
+bool box_box_crossing_edges(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
+                            const Vec3T<S>& t, const BoxBoxAxis<S>& axis, Vec3T<S>& on_a,
+                            Vec3T<S>& on_b) {
+  const S tie = S(kBoxTie);
+  const Vec3T<S>& n = axis.normal;
+  const int i = (axis.index - 6) / 3, j = (axis.index - 6) % 3;
+  if (!(ha[i] > S(0) && hb[j] > S(0))) return false;
+  const Vec3T<S> d_b = -(r.transpose() * n);
+  Vec3T<S> centre_a = Vec3T<S>::Zero(), corner_b = Vec3T<S>::Zero(), half_a = Vec3T<S>::Zero();
+  for (int k = 0; k < 3; ++k) {
+    if (k != i) {
+      if (!(std::abs(n[k]) > tie)) return false;
+      centre_a[k] = sign_nonneg(n[k]) * ha[k];
+    }
+    if (k != j) {
+      if (!(std::abs(d_b[k]) > tie)) return false;
+      corner_b[k] = sign_nonneg(d_b[k]) * hb[k];
+    }
+  }
+  half_a[i] = ha[i];
+  const CoreSegment<S> edge_a{centre_a, half_a};
+  const CoreSegment<S> edge_b{r * corner_b + t, r.col(j) * hb[j]};
+  S u = S(0), v = S(0);
+  closest_points_of_segments(edge_a, edge_b, on_a, on_b, &u, &v);
+  return std::abs(u) < S(1) && std::abs(v) < S(1);
+}
+
+/// Closest points over a face: the reference box (half extents h_ref, at the origin of its frame)
+/// has its face i with outward normal side * e_i towards the other box (half extents h_other,
+/// pose (r, t) in the reference frame). The other box's support point along -side * e_i, q, is
+/// a closest point when its projection p on the face's plane lies on the face: q - p is then the
+/// gap along the face normal, which no pair of points can beat. When the other box's support
+/// feature is an edge or a face (ties), q is its point nearest to the line through the face's
+/// centre, and if that misses the face, its point nearest to the face's nearest point to it (one
+/// step of alternating projections between the two). Returns false when q misses the face or the
+/// gap is not positive; on true, on_ref and on_other are in the reference frame and `distance`
+/// is the gap.
+template <class S>
+bool closest_over_face(const Vec3T<S>& h_ref, const Vec3T<S>& h_other, const Mat3T<S>& r,
+                       const Vec3T<S>& t, int i, S side, Vec3T<S>& on_ref, Vec3T<S>& on_other,
+                       S& distance) {
+  const S tie = S(kBoxTie);
+  const Vec3T<S> d = -side * r.row(i).transpose();  // -side e_i in the other box's frame
+  const int j = kNextAxis[i], k = kPrevAxis[i];
+  auto over_face = [&](const Vec3T<S>& p) {
+    return std::abs(p[j]) <= h_ref[j] && std::abs(p[k]) <= h_ref[k];
+  };
+  on_other = r * box_support_towards(h_other, d, Vec3T<S>(-(r.transpose() * t)), tie) + t;
+  if (!over_face(on_other)) {
+    if (!(d.cwiseAbs().minCoeff() <= tie)) return false;  // a single vertex: no other choice
+    Vec3T<S> target = on_other;
+    target[j] = std::clamp(target[j], -h_ref[j], h_ref[j]);
+    target[k] = std::clamp(target[k], -h_ref[k], h_ref[k]);
+    on_other = r * box_support_towards(h_other, d, Vec3T<S>(r.transpose() * (target - t)), tie) + t;
+    if (!over_face(on_other)) return false;
+  }
+  on_ref = on_other;
+  on_ref[i] = side * h_ref[i];
+  distance = side * on_other[i] - h_ref[i];
+  return distance > S(0);
+}
+
+/// Closest points of two separated boxes (A: half extents ha; B: half extents hb, pose (r, t) in
+/// A's frame) in closed form, from the separating axis that box_box_axis() found with the largest
+/// gap. The distance of two separated convex sets is the largest gap over all directions, so a
+/// point p of A and a point q of B with q - p = gap * n for some direction n with a positive gap
+/// are closest points:
+///   - a face axis: q on the other box's support feature, p its projection on the face, which
+///     must lie on the face (a vertex, edge or face over a face; closest_over_face());
+///   - an edge axis: the closest points of A's and B's support edges, both interior to their
+///     edges (crossing edges), where q - p is orthogonal to both, hence along n.
+/// When the best axis fails, the best face axis of each box is tried: an edge axis wins over a
+/// parallel face by rounding alone when two faces are parallel. Otherwise (the closest features
+/// are a vertex and a vertex or an edge, whose direction is none of the 15 axes, or parallel
+/// edges) it returns false and the caller runs GJK. On true, on_a and on_b are in A's frame,
+/// `normal` (unit, from A towards B) is the axis and `distance` = (on_b - on_a) . normal. A
+/// support feature tied to within 1e-12 of the axis (boxes turned by quarter turns, rounded)
+/// counts as an edge or a face, which changes the distance by at most 2e-12 of the boxes' size.
+template <class S>
+bool box_box_closest(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r, const Vec3T<S>& t,
+                     const BoxBoxAxis<S>& axis, Vec3T<S>& on_a, Vec3T<S>& on_b, Vec3T<S>& normal,
+                     S& distance) {
+  // A's face i, towards B.
+  auto over_a = [&](int i) {
+    const S side = sign_nonneg(t[i]);
+    if (!closest_over_face(ha, hb, r, t, i, side, on_a, on_b, distance)) return false;
+    normal = Vec3T<S>::Zero();
+    normal[i] = side;
+    return true;
+  };
+  // B's face j, towards A, as the reference box: A's pose in B's frame is (r^T, -r^T t).
+  auto over_b = [&](int j) {
+    const Mat3T<S> rt = r.transpose();
+    const Vec3T<S> tb = -(rt * t);
+    const S side = sign_nonneg(tb[j]);
+    Vec3T<S> on_b_local, on_a_local;
+    if (!closest_over_face(hb, ha, rt, tb, j, side, on_b_local, on_a_local, distance)) return false;
+    on_a = r * on_a_local + t;
+    on_b = r * on_b_local + t;
+    normal = -side * r.col(j);
+    return true;
+  };
+  // The face axis of each box with the largest gap.
+  auto best_face_a = [&] {
+    int best = 0;
+    S best_gap = -std::numeric_limits<S>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      const S gap = std::abs(t[i]) - ha[i] - (r.row(i).cwiseAbs().dot(hb));
+      if (gap > best_gap) best_gap = gap, best = i;
+    }
+    return best;
+  };
+  auto best_face_b = [&] {
+    int best = 0;
+    S best_gap = -std::numeric_limits<S>::infinity();
+    for (int j = 0; j < 3; ++j) {
+      const S gap = std::abs(r.col(j).dot(t)) - hb[j] - (r.col(j).cwiseAbs().dot(ha));
+      if (gap > best_gap) best_gap = gap, best = j;
+    }
+    return best;
+  };
+  if (axis.index < 3) return over_a(axis.index) || over_b(best_face_b());
+  if (axis.index < 6) return over_b(axis.index - 3) || over_a(best_face_a());
+  if (box_box_crossing_edges(ha, hb, r, t, axis, on_a, on_b)) {
+    normal = axis.normal;
+    distance = (on_b - on_a).dot(normal);
+    return distance > S(0);
+  }
+  return over_a(best_face_a()) || over_b(best_face_b());
 }
 
 }  // namespace mink::detail
