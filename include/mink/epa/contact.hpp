@@ -129,8 +129,9 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     const auto axis = detail::box_box_axis(ha, hb, rel.rotation, rel.translation, S(0));
     Vec3T<S> on_a, on_b, normal;
     S core_distance;
-    if (axis.overlap < -touch && detail::box_box_closest(ha, hb, rel.rotation, rel.translation,
-                                                         axis, on_a, on_b, normal, core_distance)) {
+    if (axis.overlap < -touch &&
+        detail::box_box_closest(ha, hb, rel.rotation, rel.translation, axis, true, on_a, on_b,
+                                normal, core_distance)) {
       detail::contact_from_cores(on_a, on_b, normal, core_distance, radius_a, radius_b, inside,
                                  result);
       result.normal = pose_a.rotate(result.normal);
@@ -140,6 +141,17 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       detail::save_cache(
           cache, 1, [&normal](int) { return normal; }, normal);
       result.status = result.intersect ? Status::Intersecting : Status::Separated;
+      return result;
+    }
+    if (axis.overlap > touch && detail::box_box_closest(ha, hb, rel.rotation, rel.translation, axis,
+                                                        false, on_a, on_b, normal, core_distance)) {
+      // The deepest point of one box over the other's face, or two crossing edges: no clipping.
+      result.status = Status::Intersecting;
+      result.intersect = true;
+      result.depth = radius_a + radius_b - core_distance;
+      result.normal = pose_a.rotate(normal);
+      result.point_a = pose_a.apply(Vec3T<S>(on_a + radius_a * normal));
+      result.point_b = pose_a.apply(Vec3T<S>(on_b - radius_b * normal));
       return result;
     }
     if (axis.overlap > touch) {
@@ -206,8 +218,10 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     return result;
   }
   // A direction n with support value h(n) < -touch proves A - B lies beyond the origin: the cores
-  // are apart after all, and GJK's closest points are the answer.
-  if (gjk.upper > touch && epa.upper < -touch) return cores_apart();
+  // are apart after all, and GJK's closest points are the answer. So does a flat A - B (two
+  // coplanar flat boxes side by side) that GJK's upper bound keeps the origin off: it has no
+  // interior, and separate_cores() tells apart from touching by the rule distance() uses.
+  if (gjk.upper > touch && (epa.upper < -touch || epa.degenerate)) return cores_apart();
   const Vec3T<S>& n = epa.normal;
   result.intersect = true;
   result.depth = std::max(S(0), epa.depth) + radius_a + radius_b;

@@ -114,8 +114,8 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       const auto axis = detail::box_box_axis(ha, hb, diff.rotation, diff.translation, S(0));
       Vec3T<S> on_a, on_b, normal;
       S core_distance;
-      if (detail::box_box_closest(ha, hb, diff.rotation, diff.translation, axis, on_a, on_b, normal,
-                                  core_distance)) {
+      if (detail::box_box_closest(ha, hb, diff.rotation, diff.translation, axis, true, on_a, on_b,
+                                  normal, core_distance)) {
         result.status = Status::Separated;
         result.distance = core_distance - radius_a - radius_b;
         result.normal = pose_a.rotate(normal);

@@ -260,9 +260,9 @@ bool box_box_crossing_edges(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<
 /// gap along the face normal, which no pair of points can beat. When the other box's support
 /// feature is an edge or a face (ties), q is its point nearest to the line through the face's
 /// centre, and if that misses the face, its point nearest to the face's nearest point to it (one
-/// step of alternating projections between the two). Returns false when q misses the face or the
-/// gap is not positive; on true, on_ref and on_other are in the reference frame and `distance`
-/// is the gap.
+/// step of alternating projections between the two). Returns false when q misses the face; on
+/// true, on_ref and on_other are in the reference frame and `distance` is the gap (negative: the
+/// depth of q below the face, whose deepest point it then is).
 template <class S>
 bool closest_over_face(const Vec3T<S>& h_ref, const Vec3T<S>& h_other, const Mat3T<S>& r,
                        const Vec3T<S>& t, int i, S side, Vec3T<S>& on_ref, Vec3T<S>& on_other,
@@ -285,76 +285,88 @@ bool closest_over_face(const Vec3T<S>& h_ref, const Vec3T<S>& h_other, const Mat
   on_ref = on_other;
   on_ref[i] = side * h_ref[i];
   distance = side * on_other[i] - h_ref[i];
-  return distance > S(0);
+  return true;
 }
 
-/// Closest points of two separated boxes (A: half extents ha; B: half extents hb, pose (r, t) in
-/// A's frame) in closed form, from the separating axis that box_box_axis() found with the largest
-/// gap. The distance of two separated convex sets is the largest gap over all directions, so a
-/// point p of A and a point q of B with q - p = gap * n for some direction n with a positive gap
-/// are closest points:
+/// Closest points of two boxes (A: half extents ha; B: half extents hb, pose (r, t) in A's frame)
+/// in closed form, from the separating axis that box_box_axis() found, or their deepest points
+/// when they overlap.
+///
+/// Apart (`apart`: axis.overlap < 0): the distance of two separated convex sets is the largest
+/// gap over all directions, so a point p of A and a point q of B with q - p = gap * n for some
+/// direction n with a positive gap are closest points:
 ///   - a face axis: q on the other box's support feature, p its projection on the face, which
 ///     must lie on the face (a vertex, edge or face over a face; closest_over_face());
 ///   - an edge axis: the closest points of A's and B's support edges, both interior to their
 ///     edges (crossing edges), where q - p is orthogonal to both, hence along n.
 /// When the best axis fails, the best face axis of each box is tried: an edge axis wins over a
-/// parallel face by rounding alone when two faces are parallel. Otherwise (the closest features
-/// are a vertex and a vertex or an edge, whose direction is none of the 15 axes, or parallel
-/// edges) it returns false and the caller runs GJK. On true, on_a and on_b are in A's frame,
-/// `normal` (unit, from A towards B) is the axis and `distance` = (on_b - on_a) . normal. A
+/// parallel face by rounding alone when two faces are parallel.
+///
+/// Overlapping: on the least-overlap axis only (the depth is that overlap), the same features give
+/// the deepest points, B's deepest point and its projection on A's face (or the reverse), or the
+/// crossing edges' closest points; `distance` is then minus the depth.
+///
+/// Otherwise (apart: the closest features are a vertex and a vertex or an edge, whose direction is
+/// none of the 15 axes, or parallel edges; overlapping: the deepest point is not over the face)
+/// it returns false and the caller runs GJK or clips. On true, on_a and on_b are in A's frame,
+/// `normal` (unit, from A towards B) is the axis used and `distance` = (on_b - on_a) . normal. A
 /// support feature tied to within 1e-12 of the axis (boxes turned by quarter turns, rounded)
 /// counts as an edge or a face, which changes the distance by at most 2e-12 of the boxes' size.
 template <class S>
 bool box_box_closest(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r, const Vec3T<S>& t,
-                     const BoxBoxAxis<S>& axis, Vec3T<S>& on_a, Vec3T<S>& on_b, Vec3T<S>& normal,
-                     S& distance) {
-  // A's face i, towards B.
-  auto over_a = [&](int i) {
-    const S side = sign_nonneg(t[i]);
+                     const BoxBoxAxis<S>& axis, bool apart, Vec3T<S>& on_a, Vec3T<S>& on_b,
+                     Vec3T<S>& normal, S& distance) {
+  // A's face i on the `side` towards B.
+  auto over_a = [&](int i, S side) {
     if (!closest_over_face(ha, hb, r, t, i, side, on_a, on_b, distance)) return false;
     normal = Vec3T<S>::Zero();
     normal[i] = side;
-    return true;
+    return !apart || distance > S(0);
   };
-  // B's face j, towards A, as the reference box: A's pose in B's frame is (r^T, -r^T t).
-  auto over_b = [&](int j) {
+  // B's face j on the `side` towards A, as the reference box: A's pose in B's frame is
+  // (r^T, -r^T t).
+  auto over_b = [&](int j, S side) {
     const Mat3T<S> rt = r.transpose();
     const Vec3T<S> tb = -(rt * t);
-    const S side = sign_nonneg(tb[j]);
     Vec3T<S> on_b_local, on_a_local;
     if (!closest_over_face(hb, ha, rt, tb, j, side, on_b_local, on_a_local, distance)) return false;
     on_a = r * on_a_local + t;
     on_b = r * on_b_local + t;
     normal = -side * r.col(j);
-    return true;
+    return !apart || distance > S(0);
   };
-  // The face axis of each box with the largest gap.
-  auto best_face_a = [&] {
+  // The face axis of each box with the largest gap, on its side towards the other box.
+  auto over_best_face_a = [&] {
     int best = 0;
     S best_gap = -std::numeric_limits<S>::infinity();
     for (int i = 0; i < 3; ++i) {
       const S gap = std::abs(t[i]) - ha[i] - (r.row(i).cwiseAbs().dot(hb));
       if (gap > best_gap) best_gap = gap, best = i;
     }
-    return best;
+    return over_a(best, sign_nonneg(t[best]));
   };
-  auto best_face_b = [&] {
+  auto over_best_face_b = [&] {
     int best = 0;
     S best_gap = -std::numeric_limits<S>::infinity();
     for (int j = 0; j < 3; ++j) {
       const S gap = std::abs(r.col(j).dot(t)) - hb[j] - (r.col(j).cwiseAbs().dot(ha));
       if (gap > best_gap) best_gap = gap, best = j;
     }
-    return best;
+    return over_b(best, -sign_nonneg(r.col(best).dot(t)));
   };
-  if (axis.index < 3) return over_a(axis.index) || over_b(best_face_b());
-  if (axis.index < 6) return over_b(axis.index - 3) || over_a(best_face_a());
+  if (axis.index < 3)
+    return over_a(axis.index, axis.normal[axis.index]) || (apart && over_best_face_b());
+  if (axis.index < 6) {
+    const int j = axis.index - 3;
+    return over_b(j, axis.normal.dot(r.col(j)) > S(0) ? S(-1) : S(1)) ||
+           (apart && over_best_face_a());
+  }
   if (box_box_crossing_edges(ha, hb, r, t, axis, on_a, on_b)) {
     normal = axis.normal;
     distance = (on_b - on_a).dot(normal);
-    return distance > S(0);
+    if (!apart || distance > S(0)) return true;
   }
-  return over_a(best_face_a()) || over_b(best_face_b());
+  return apart && (over_best_face_a() || over_best_face_b());
 }
 
 }  // namespace mink::detail
