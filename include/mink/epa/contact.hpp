@@ -16,7 +16,8 @@
 /// rounded boxes) whose cores overlap skip GJK and EPA: the separating axis test
 /// (query/box_box.hpp) gives the same depth and normal to rounding, and `iterations` is 0; so
 /// do boxes whose cores are apart with closest points that its best axis gives in closed form
-/// (box_box_closest()).
+/// (box_box_closest()). A sphere or point against a box (or rounded box) is a closed form
+/// throughout, inside the box or not (query/point_box.hpp).
 ///
 /// Ties: when several normals are equally good the query returns one of them and sets
 /// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric
@@ -25,6 +26,9 @@
 /// when it can be told) or overlap along a line (the line of centres' orthogonal part). Coincident
 /// boxes are not ties of this kind: their Minkowski difference has volume, and the normal is the
 /// axis of a face of least depth (the first in the order A's x, y, z, then B's, when several tie).
+/// A sphere's (or point's) centre inside a box, as deep below two faces (on a diagonal plane of
+/// the box, or its centre plane) does set `normal_chosen`: the normal is then the first such face
+/// axis in x, y, z order, on the side of the centre, the + side on the centre plane.
 ///
 /// Tolerances: distances within `tolerances.relative * size` of zero count as touching
 /// (intersecting, depth 0); EPA stops when its bounds on the core depth are within
@@ -35,6 +39,7 @@
 #include "mink/gjk/distance.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/manifold/clip_box_pair.hpp"
+#include "mink/query/point_box.hpp"
 
 namespace mink {
 
@@ -115,6 +120,19 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       result.status = result.intersect ? Status::Intersecting : Status::Separated;
       return result;
     }
+  }
+  if constexpr (detail::kPointBox<A, B>) {
+    // A sphere or point against a box, inside it or not: closed form, no GJK or EPA.
+    const auto cores = detail::point_box_cores(a, pose_a, b, pose_b);
+    if (!(std::abs(cores.distance) <= std::numeric_limits<S>::max())) {
+      result.error = detail::kOverflowError;
+      return result;
+    }
+    detail::contact_from_cores(cores.on_a, cores.on_b, cores.normal, cores.distance, radius_a,
+                               radius_b, inside, result);
+    result.normal_chosen = cores.tie;
+    result.status = result.intersect ? Status::Intersecting : Status::Separated;
+    return result;
   }
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
     // Two boxes whose cores overlap: the separating axis test is EPA's depth and normal, exact

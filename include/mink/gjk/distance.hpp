@@ -24,7 +24,8 @@
 /// points are the job of EPA (a separate query).
 ///
 /// Pairs of spheres, capsules, points and segments (and their Rounded versions) take a closed form
-/// instead of GJK (segment_cores.hpp): exact to rounding, 0 iterations. Pairs of boxes (and
+/// instead of GJK (segment_cores.hpp): exact to rounding, 0 iterations; so do spheres and points
+/// against boxes (query/point_box.hpp). Pairs of boxes (and
 /// rounded boxes) report 0 iterations too when the separating axis test proves them overlapping,
 /// or when its best axis gives their closest points in closed form (a vertex, edge or face over a
 /// face, or two crossing edges: box_box_closest() in query/box_box.hpp). For other cores with no
@@ -38,6 +39,7 @@
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/separation.hpp"
 #include "mink/query/box_box.hpp"
+#include "mink/query/point_box.hpp"
 
 namespace mink {
 
@@ -91,6 +93,27 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.normal = normal;
     result.point_a = on_a + radius_a * result.normal + pose_a.translation;
     result.point_b = on_b - radius_b * result.normal + pose_a.translation;
+    return result;
+  }
+  if constexpr (detail::kPointBox<A, B>) {
+    // A sphere or point against a box: closed form, no iteration.
+    const auto cores = detail::point_box_cores(a, pose_a, b, pose_b);
+    const S radius_a = a.core_radius(), radius_b = b.core_radius();
+    if (!(std::abs(cores.distance) <= std::numeric_limits<S>::max())) {
+      result.error = detail::kOverflowError;
+      return result;
+    }
+    const S touch = tolerances.relative * (a.bounding_radius() + b.bounding_radius());
+    if (cores.distance <= radius_a + radius_b + touch) {
+      result.status = Status::Intersecting;
+      result.intersect = true;
+      return result;
+    }
+    result.status = Status::Separated;
+    result.distance = cores.distance - radius_a - radius_b;
+    result.normal = cores.normal;
+    result.point_a = cores.on_a + radius_a * cores.normal;
+    result.point_b = cores.on_b - radius_b * cores.normal;
     return result;
   }
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);

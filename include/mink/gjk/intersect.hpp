@@ -11,12 +11,14 @@
 /// Rounded versions) take a closed form instead (segment_cores.hpp) and report 0 iterations; so do
 /// pairs of boxes (and rounded boxes) that the separating axis test decides
 /// (query/box_box.hpp: when the cores overlap or are clearly apart, and no two edges are parallel
-/// to within 1e-6 without being exactly parallel).
+/// to within 1e-6 without being exactly parallel), and spheres and points against boxes
+/// (query/point_box.hpp).
 #pragma once
 
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/query/box_box.hpp"
+#include "mink/query/point_box.hpp"
 
 namespace mink {
 
@@ -61,6 +63,17 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   const S radius = a.core_radius() + b.core_radius();
   const S size = a.bounding_radius() + b.bounding_radius();
+  if constexpr (detail::kPointBox<A, B>) {
+    // A sphere or point against a box: closed form, no iteration.
+    const S core_distance = detail::point_box_cores(a, pose_a, b, pose_b).distance;
+    if (!(std::abs(core_distance) <= std::numeric_limits<S>::max())) {
+      result.error = detail::kOverflowError;
+      return result;
+    }
+    result.intersect = core_distance <= radius + tolerances.relative * size;
+    result.status = result.intersect ? Status::Intersecting : Status::Separated;
+    return result;
+  }
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
     // Two boxes: the separating axis test decides in a few flops unless its largest gap lies
     // between 0 and the radii plus the touching tolerance (a corner near a corner: the distance

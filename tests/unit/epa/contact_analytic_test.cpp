@@ -276,4 +276,107 @@ TEST(ContactAnalytic, BoxBox) {
   }
 }
 
+/// Point cores (Point, Rounded<Sphere>) against box cores (Box, Rounded<Box>) in either order:
+/// intersect(), distance() and contact() take the closed form (0 iterations) and agree with the
+/// clamped point of the box (oracle::point_box) with the radii added; swapping A and B flips the
+/// normal and keeps depth and distance. Boxes from 1e-6 to 1, and 1e6 from the origin; centres
+/// inside, outside and on symmetry planes and the surface.
+TEST(ContactAnalytic, PointCoreBoxClosedForm) {
+  const std::uint64_t base = 330000;
+  const int n = oracle::sweep_count(2000);
+  oracle::DepthWorst worst("contact point core-box core");
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const double scale = rng.chance(0.2) ? 1e-4 : 1.0;
+    const mink::Box core{
+        scale * Vec3(rng.log_uniform(0.01, 1), rng.log_uniform(0.01, 1), rng.log_uniform(0.01, 1))};
+    const double box_margin = rng.chance(0.3) ? scale * rng.uniform(0, 0.2) : 0.0;
+    const double point_radius = rng.chance(0.7) ? scale * rng.uniform(0, 0.5) : 0.0;
+    const mink::Rounded<mink::Box> box{core, box_margin};
+    const mink::Point point{scale * rng.in_ball(0.5)};
+    const mink::Rounded<mink::Point> ball{point, point_radius};
+    const double size = box.bounding_radius() + ball.bounding_radius();
+    // Far from the origin only at scale 1: there the oracle's own support values carry 1e-13.
+    const Pose pb = rng.pose(scale == 1.0 && rng.chance(0.2) ? 1e6 : 5);
+    Vec3 local;
+    for (int k = 0; k < 3; ++k) {
+      const double reach = core.half_extents[k] + box_margin + point_radius;
+      local[k] = rng.uniform(-1.2 * reach, 1.2 * reach);
+    }
+    if (rng.chance(0.1)) local[rng.integer(0, 2)] = 0;  // on a symmetry plane
+    if (rng.chance(0.1)) {
+      const int k = rng.integer(0, 2);
+      local[k] = core.half_extents[k];  // on the core's surface, or its plane
+    }
+    // The point core lands at `local` in the box's frame.
+    const mink::Quat turn = rng.rotation();
+    const Pose pa = Pose::from(pb.apply(local) - turn * point.position, turn);
+    const oracle::WorldBox wb{widen(core.half_extents), widen(pb.rotation), widen(pb.translation)};
+    // The centre as mink sees it (the pose rounds it at 1e6 from the origin), in long double.
+    const V3 centre = widen(pa.rotation) * widen(point.position) + widen(pa.translation);
+    const auto clamped = oracle::point_box(wb, centre);
+    const Real radii = Real(box_margin + point_radius);
+    const Real depth = radii - clamped.signed_distance;
+    const auto ball_support = oracle::sphere_support(centre, point_radius);
+    const oracle::SupportFn box_support = [&](const V3& u) {
+      return oracle::box_support(wb)(u) + Real(box_margin) * u.norm();
+    };
+    const auto ab = mink::contact(ball, pa, box, pb);
+    const auto ba = mink::contact(box, pb, ball, pa);
+    oracle::expect_contact_matches(depth, ball_support, box_support, ab, size,
+                                   pb.translation.norm(), worst);
+    oracle::expect_contact_matches(depth, box_support, ball_support, ba, size,
+                                   pb.translation.norm(), worst);
+    EXPECT_EQ(ab.iterations, 0);
+    EXPECT_EQ(ba.iterations, 0);
+    EXPECT_EQ(ab.intersect, ba.intersect);
+    EXPECT_NEAR(ab.depth, ba.depth, 1e-12 * size);
+    EXPECT_LE((ab.normal + ba.normal).norm(), 1e-12) << "swapping A and B must flip the normal";
+    const auto d = mink::distance(ball, pa, box, pb);
+    const auto in = mink::intersect(box, pb, ball, pa);
+    EXPECT_EQ(d.iterations, 0);
+    EXPECT_EQ(in.iterations, 0);
+    const double tol = 1e-9 * size + 1e-15 * pb.translation.norm();
+    if (depth < -tol) {
+      EXPECT_EQ(d.status, mink::Status::Separated);
+      EXPECT_NEAR(d.distance, double(-depth), tol);
+      EXPECT_LE((d.point_b - d.point_a - d.distance * d.normal).norm(), tol);
+      EXPECT_FALSE(in.intersect);
+    } else if (depth > tol) {
+      EXPECT_TRUE(d.intersect);
+      EXPECT_TRUE(in.intersect);
+    }
+  }
+}
+
+/// A point core as deep below two or three faces (a cube's centre, a diagonal) leaves through one
+/// of them: contact() says the normal was chosen. One face nearest: it was not.
+TEST(ContactAnalytic, PointCoreBoxTies) {
+  const mink::Box cube{Vec3(1, 1, 1)}, slab{Vec3(2, 1, 0.5)};
+  const mink::Sphere ball{0.25};
+  struct Case {
+    const mink::Box* box;
+    Vec3 centre;
+    bool chosen;
+    double depth;
+  };
+  const Case cases[] = {{&cube, Vec3(0, 0, 0), true, 1.25},
+                        {&cube, Vec3(0.5, 0.5, 0.1), true, 0.75},
+                        {&cube, Vec3(0.5, 0.4, 0.1), false, 0.75},
+                        {&slab, Vec3(0.3, 0.2, 0), true, 0.75},
+                        {&slab, Vec3(0.3, 0.2, 0.1), false, 0.65}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(testing::Message() << "centre " << c.centre.transpose());
+    const auto got =
+        mink::contact(ball, Pose::from_translation(c.centre), *c.box, Pose::identity());
+    EXPECT_EQ(got.status, mink::Status::Intersecting);
+    EXPECT_EQ(got.normal_chosen, c.chosen);
+    EXPECT_DOUBLE_EQ(got.depth, c.depth);
+    EXPECT_DOUBLE_EQ(got.normal.norm(), 1.0);
+    EXPECT_LE((got.point_b - got.point_a + got.depth * got.normal).norm(), 1e-15);
+  }
+}
+
 }  // namespace
