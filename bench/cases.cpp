@@ -203,6 +203,8 @@ std::vector<Case> generate() {
   for (int n : {8, 32, 128, 512})
     families.push_back({"polytope" + std::to_string(n) + "-polytope" + std::to_string(n),
                         ShapeKind::Polytope, ShapeKind::Polytope, n});
+  // Last, so that the families above keep their seeds.
+  families.push_back({"sphere-box", ShapeKind::Sphere, ShapeKind::Box, 0});
   std::vector<Case> cases;
   unsigned long long seed = 20240601;
   for (const auto& f : families)

@@ -120,6 +120,8 @@ std::vector<Method> make_mink_methods(const Case& c) {
     return one<mink::Sphere, mink::Polytope>(c, to_mink_sphere, to_mink_polytope);
   if (ka == ShapeKind::Polytope && kb == ShapeKind::Polytope)
     return one<mink::Polytope, mink::Polytope>(c, to_mink_polytope, to_mink_polytope);
+  if (ka == ShapeKind::Sphere && kb == ShapeKind::Box)
+    return one<mink::Sphere, mink::Box>(c, to_mink_sphere, to_mink_box);
   throw std::logic_error("make_mink_methods: unsupported pair");
 }
 

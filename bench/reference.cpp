@@ -305,7 +305,7 @@ long double reference_depth(const Case& c, std::size_t i) {
   const ShapeDesc& sb = c.shapes_b[p.b];
   if (sa.kind == ShapeKind::Capsule && sb.kind == ShapeKind::Capsule)
     return Real(sa.radius) + Real(sb.radius) - capsule_segment_distance(c, i);
-  if (sa.kind == ShapeKind::Sphere && sb.kind == ShapeKind::Polytope)
+  if (sa.kind == ShapeKind::Sphere && !sb.triangles.empty())  // a polytope or a box
     return Real(sa.radius) +
            point_depth(p.translation_a.cast<Real>(), place(sb, p.rotation_b, p.translation_b));
   if (!sa.triangles.empty() && !sb.triangles.empty())
@@ -376,7 +376,7 @@ long double reference_distance(const Case& c, std::size_t i) {
   const ShapeDesc& sb = c.shapes_b[p.b];
   if (sa.kind == ShapeKind::Capsule && sb.kind == ShapeKind::Capsule)
     return capsule_segment_distance(c, i) - Real(sa.radius) - Real(sb.radius);
-  if (sa.kind == ShapeKind::Sphere && sb.kind == ShapeKind::Polytope) {
+  if (sa.kind == ShapeKind::Sphere && !sb.triangles.empty()) {  // a polytope or a box
     // The centre is outside the hull (the pair is separated), so its distance to the hull is its
     // distance to the nearest boundary triangle.
     const V3 centre = p.translation_a.cast<Real>();

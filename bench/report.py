@@ -26,7 +26,10 @@ NOT_GJK = {("intersect", "box-box", "fcl_ccd"), ("intersect", "box-box", "fcl_in
            ("distance", "capsule-capsule", "fcl_ccd"),
            ("distance", "capsule-capsule", "fcl_indep"),
            ("contact", "box-box/overlap", "fcl_indep"),
-           ("contact", "capsule-capsule", "fcl_indep")}
+           ("contact", "capsule-capsule", "fcl_indep"),
+           ("intersect", "sphere-box", "fcl_ccd"), ("intersect", "sphere-box", "fcl_indep"),
+           ("distance", "sphere-box", "fcl_ccd"), ("distance", "sphere-box", "fcl_indep"),
+           ("contact", "sphere-box", "fcl_indep")}
 COUNTERS = ("wrong", "max_rel_err", "normal_err", "point_err", "iterations", "threw")
 
 

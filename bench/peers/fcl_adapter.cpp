@@ -5,8 +5,10 @@
 // with FCL's own shapes Box, Capsule, Sphere and Convex (hull vertices plus faces: FCL walks the
 // hull's edges for supports when it has more than 32 vertices). Default solver tolerances.
 // Note: FCL dispatches some pairs to dedicated primitive code rather than GJK: box-box
-// intersection is a SAT test (boxBoxIntersect) in both solvers, and capsule-capsule distance is
-// analytic (segment-segment) in both; the report marks those cells.
+// intersection is a SAT test (boxBoxIntersect) in both solvers, capsule-capsule distance is
+// analytic (segment-segment) in both, and so are sphere-box intersection and distance
+// (sphereBoxIntersect, sphereBoxDistance) and fcl_indep's sphere-box contact; the report marks
+// those cells.
 //
 // Contact (the full answer: verdict, distance or depth, normal, points):
 //   fcl_ccd:   shapeSignedDistance, which is what fcl::distance calls with enable_signed_distance:
@@ -200,6 +202,8 @@ std::vector<Method> make_fcl_methods(const Case& c) {
     return both<fcl::Sphere<double>, fcl::Convex<double>>(c, to_fcl_sphere, to_fcl_convex);
   if (ka == ShapeKind::Polytope && kb == ShapeKind::Polytope)
     return both<fcl::Convex<double>, fcl::Convex<double>>(c, to_fcl_convex, to_fcl_convex);
+  if (ka == ShapeKind::Sphere && kb == ShapeKind::Box)
+    return both<fcl::Sphere<double>, fcl::Box<double>>(c, to_fcl_sphere, to_fcl_box);
   throw std::logic_error("make_fcl_methods: unsupported pair");
 }
 

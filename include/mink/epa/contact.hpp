@@ -123,11 +123,12 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   if constexpr (detail::kPointBox<A, B>) {
     // A sphere or point against a box, inside it or not: closed form, no GJK or EPA.
-    const auto cores = detail::point_box_cores(a, pose_a, b, pose_b);
-    if (!(std::abs(cores.distance) <= std::numeric_limits<S>::max())) {
+    const auto local = detail::point_box_local(a, pose_a, b, pose_b);
+    if (!(std::abs(local.signed_distance) <= std::numeric_limits<S>::max())) {
       result.error = detail::kOverflowError;
       return result;
     }
+    const auto cores = detail::point_box_world<A, B>(local, pose_a, pose_b);
     detail::contact_from_cores(cores.on_a, cores.on_b, cores.normal, cores.distance, radius_a,
                                radius_b, inside, result);
     result.normal_chosen = cores.tie;

@@ -97,18 +97,19 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   if constexpr (detail::kPointBox<A, B>) {
     // A sphere or point against a box: closed form, no iteration.
-    const auto cores = detail::point_box_cores(a, pose_a, b, pose_b);
+    const auto local = detail::point_box_local(a, pose_a, b, pose_b);
     const S radius_a = a.core_radius(), radius_b = b.core_radius();
-    if (!(std::abs(cores.distance) <= std::numeric_limits<S>::max())) {
+    if (!(std::abs(local.signed_distance) <= std::numeric_limits<S>::max())) {
       result.error = detail::kOverflowError;
       return result;
     }
     const S touch = tolerances.relative * (a.bounding_radius() + b.bounding_radius());
-    if (cores.distance <= radius_a + radius_b + touch) {
+    if (local.signed_distance <= radius_a + radius_b + touch) {
       result.status = Status::Intersecting;
       result.intersect = true;
       return result;
     }
+    const auto cores = detail::point_box_world<A, B>(local, pose_a, pose_b);
     result.status = Status::Separated;
     result.distance = cores.distance - radius_a - radius_b;
     result.normal = cores.normal;

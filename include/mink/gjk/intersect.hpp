@@ -65,12 +65,18 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   const S size = a.bounding_radius() + b.bounding_radius();
   if constexpr (detail::kPointBox<A, B>) {
     // A sphere or point against a box: closed form, no iteration.
-    const S core_distance = detail::point_box_cores(a, pose_a, b, pose_b).distance;
-    if (!(std::abs(core_distance) <= std::numeric_limits<S>::max())) {
+    const Vec3T<S> gap = detail::point_box_gap(a, pose_a, b, pose_b);
+    const S gap_sq = gap.squaredNorm();
+    if (!(gap_sq <= std::numeric_limits<S>::max())) {
       result.error = detail::kOverflowError;
       return result;
     }
-    result.intersect = core_distance <= radius + tolerances.relative * size;
+    // Squared, without a root, unless a square underflows.
+    const S reach = radius + tolerances.relative * size, reach_sq = reach * reach;
+    constexpr S kSmallest = std::numeric_limits<S>::min();
+    result.intersect = gap_sq >= kSmallest && reach_sq >= kSmallest
+                           ? gap_sq <= reach_sq
+                           : detail::gap_length(gap, gap_sq) <= reach;
     result.status = result.intersect ? Status::Intersecting : Status::Separated;
     return result;
   }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include "mink/gjk/segment_cores.hpp"
@@ -44,54 +45,94 @@ struct CorePair {
   bool tie;
 };
 
-/// The cores of a point-core shape and a box-core shape (either order), see the file comment.
-/// The point's depth below a face ties another when they are equal in floating point.
+/// The point core of a point-core shape in the frame of a box-core shape (either order), and the
+/// box's half extents.
 template <class A, class B>
-CorePair<typename A::Scalar> point_box_cores(const A& a, const PoseT<typename A::Scalar>& pose_a,
-                                             const B& b, const PoseT<typename A::Scalar>& pose_b) {
-  using S = typename A::Scalar;
-  constexpr bool kBoxIsA = BoxCore<A>::value;
-  const PoseT<S>& box_pose = kBoxIsA ? pose_a : pose_b;
-  const Vec3T<S>& h = [&]() -> const Vec3T<S>& {
-    if constexpr (kBoxIsA)
-      return BoxCore<A>::half_extents(a);
-    else
-      return BoxCore<B>::half_extents(b);
-  }();
-  // The point in the box's frame.
-  Vec3T<S> p;
-  if constexpr (kBoxIsA)
+const Vec3T<typename A::Scalar>& point_in_box_frame(const A& a,
+                                                    const PoseT<typename A::Scalar>& pose_a,
+                                                    const B& b,
+                                                    const PoseT<typename A::Scalar>& pose_b,
+                                                    Vec3T<typename A::Scalar>& p) {
+  if constexpr (BoxCore<A>::value) {
     p = pose_a.inverse_rotate(SegmentCore<B>::world(b, pose_b, pose_a.translation).centre);
-  else
+    return BoxCore<A>::half_extents(a);
+  } else {
     p = pose_b.inverse_rotate(SegmentCore<A>::world(a, pose_a, pose_b.translation).centre);
-  // The box's point nearest to p, and the direction from it to p (the box's outward normal).
-  Vec3T<S> on_box = p.cwiseMax(-h).cwiseMin(h);
-  Vec3T<S> out_of_box;
+    return BoxCore<B>::half_extents(b);
+  }
+}
+
+/// The point core minus its clamp into the box core, in the box's frame (0 when the point is
+/// inside), for the yes/no test: no square root, no points.
+template <class A, class B>
+Vec3T<typename A::Scalar> point_box_gap(const A& a, const PoseT<typename A::Scalar>& pose_a,
+                                        const B& b, const PoseT<typename A::Scalar>& pose_b) {
+  Vec3T<typename A::Scalar> p;
+  const auto& h = point_in_box_frame(a, pose_a, b, pose_b, p);
+  return p - p.cwiseMax(-h).cwiseMin(h);
+}
+
+/// |gap|, also where its square underflows (cores 1e-154 apart and closer).
+template <class S>
+S gap_length(const Vec3T<S>& gap, S gap_sq) {
+  return gap_sq >= std::numeric_limits<S>::min() ? std::sqrt(gap_sq) : gap.stableNorm();
+}
+
+/// The point core against the box core in the box's frame: the point `p`, the box's point nearest
+/// to it (outside) or below it on the nearest face (inside), the box's outward normal there, and
+/// the signed distance (negative inside: minus the depth). The point's depth below a face ties
+/// another when they are equal in floating point.
+template <class S>
+struct PointBoxLocal {
+  Vec3T<S> p, on_box, out_of_box;
   S signed_distance;
-  bool tie = false;
-  const Vec3T<S> gap = p - on_box;
-  const S gap_sq = gap.squaredNorm();
-  if (gap_sq > S(0)) {
-    signed_distance = std::sqrt(gap_sq);
-    out_of_box = gap / signed_distance;
+  bool tie;
+};
+
+template <class A, class B>
+PointBoxLocal<typename A::Scalar> point_box_local(const A& a,
+                                                  const PoseT<typename A::Scalar>& pose_a,
+                                                  const B& b,
+                                                  const PoseT<typename A::Scalar>& pose_b) {
+  using S = typename A::Scalar;
+  PointBoxLocal<S> out;
+  const Vec3T<S>& h = point_in_box_frame(a, pose_a, b, pose_b, out.p);
+  const Vec3T<S>& p = out.p;
+  out.on_box = p.cwiseMax(-h).cwiseMin(h);
+  out.tie = false;
+  const Vec3T<S> gap = p - out.on_box;
+  if (gap != Vec3T<S>::Zero()) {  // a coordinate was clamped: outside
+    out.signed_distance = gap_length(gap, gap.squaredNorm());
+    out.out_of_box = gap / out.signed_distance;
   } else {
     // Inside (or on the surface): out through the face nearest to p.
     const Vec3T<S> below = h - p.cwiseAbs();
     int k = 0;
     if (below[1] < below[k]) k = 1;
     if (below[2] < below[k]) k = 2;
-    tie = p[k] == S(0);
-    for (int i = 0; i < 3; ++i) tie |= i != k && below[i] == below[k];
-    out_of_box = Vec3T<S>::Zero();
-    out_of_box[k] = sign_nonneg(p[k]);
-    on_box[k] = out_of_box[k] * h[k];
-    signed_distance = -below[k];
+    out.tie = p[k] == S(0);
+    for (int i = 0; i < 3; ++i) out.tie |= i != k && below[i] == below[k];
+    out.out_of_box = Vec3T<S>::Zero();
+    out.out_of_box[k] = sign_nonneg(p[k]);
+    out.on_box[k] = out.out_of_box[k] * h[k];
+    out.signed_distance = -below[k];
   }
+  return out;
+}
+
+/// point_box_local()'s answer as the cores' points and normal in the world frame, A's and B's.
+template <class A, class B>
+CorePair<typename A::Scalar> point_box_world(const PointBoxLocal<typename A::Scalar>& local,
+                                             const PoseT<typename A::Scalar>& pose_a,
+                                             const PoseT<typename A::Scalar>& pose_b) {
+  using S = typename A::Scalar;
+  constexpr bool kBoxIsA = BoxCore<A>::value;
+  const PoseT<S>& box_pose = kBoxIsA ? pose_a : pose_b;
+  const Vec3T<S> point_world = box_pose.apply(local.p), box_world = box_pose.apply(local.on_box);
+  const Vec3T<S> normal = box_pose.rotate(local.out_of_box);
   CorePair<S> out;
-  const Vec3T<S> point_world = box_pose.apply(p), box_world = box_pose.apply(on_box);
-  const Vec3T<S> normal = box_pose.rotate(out_of_box);
-  out.distance = signed_distance;
-  out.tie = tie;
+  out.distance = local.signed_distance;
+  out.tie = local.tie;
   if constexpr (kBoxIsA) {
     out.on_a = box_world;
     out.on_b = point_world;
