@@ -40,8 +40,9 @@ struct CorePair {
   Vec3T<S> normal;  ///< unit, from A towards B: the direction B moves to separate
   /// on_b - on_a = distance * normal; negative when the cores overlap (minus the depth).
   S distance;
-  /// Overlapping only: another direction is as good (the point as deep below two faces, or at
-  /// the box's centre plane); `normal` is the first face axis in x, y, z order, on the + side.
+  /// Overlapping only: another direction is as good (the point as deep below two faces, or on
+  /// the box's centre plane); `normal` is then the first such face axis in x, y, z order, on the
+  /// point's side of the centre (the + side on the centre plane).
   bool tie;
 };
 
