@@ -596,16 +596,32 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       }
     }
   }
-  if (!(score > -std::numeric_limits<S>::infinity())) lambda[0] = lambda[1] = lambda[2] = S(1);
+  const int* holder_v = ws.faces[holder].v;
+  if (!(score >= S(0))) {
+    // p lies outside every such face, beyond rounding when the face is a sliver (a needle's edge
+    // against a vertex: its width is the needle's thickness, and a normal off by rounding moves p
+    // across it). Clamped coordinates would then land anywhere along the sliver; the face's point
+    // nearest p does not.
+    Vec3T<S> from_p[3];
+    for (int k = 0; k < 3; ++k) from_p[k] = ws.vertices[holder_v[k]].w - p;
+    const SubSimplex<S> nearest = closest_on_triangle_cold(from_p, 0, 1, 2);
+    for (int k = 0; k < 3; ++k) lambda[k] = nearest.weights[k];
+  }
   S total = S(0);
   for (int k = 0; k < 3; ++k) total += (lambda[k] = std::max(S(0), lambda[k]));
   out.a = Vec3T<S>::Zero();
   out.b = Vec3T<S>::Zero();
   for (int k = 0; k < 3; ++k) {
     const S weight = total > S(0) ? lambda[k] / total : S(1) / S(3);
-    out.a += weight * ws.vertices[ws.faces[holder].v[k]].a;
-    out.b += weight * ws.vertices[ws.faces[holder].v[k]].b;
+    out.a += weight * ws.vertices[holder_v[k]].a;
+    out.b += weight * ws.vertices[holder_v[k]].b;
   }
+  // What is left of a - b - p (rounding, or the distance from p to that nearest point, in the
+  // face's plane) is split between the two points, so that b - a = -depth * normal holds as the
+  // result promises, each point moves by half of it, and swapping A and B mirrors the answer.
+  const Vec3T<S> residual = S(0.5) * (out.a - out.b - p);
+  out.a -= residual;
+  out.b += residual;
   out.normal = normal;
   out.depth = out.lower = depth;
   out.upper = std::max(depth, least.value);

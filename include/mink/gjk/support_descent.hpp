@@ -89,7 +89,9 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
         const S margin = (hi - lo) / S(16);
         if (!(t > lo + margin && t < hi - margin)) t = (lo + hi) / S(2);
       }
-      const Vec3T<S> d = std::cos(t) * u + std::sin(t) * v;
+      // Normalised: when the gradient is tiny next to the support point (a needle touching a
+      // face), its rounding tilts v off u by far more than eps, and |d| would drift from 1.
+      const Vec3T<S> d = (std::cos(t) * u + std::sin(t) * v).normalized();
       SimplexVertexT<S> w;
       diff.support(d, w);
       ++iterations;

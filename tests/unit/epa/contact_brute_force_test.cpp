@@ -117,7 +117,10 @@ Pose place_penetrating(Rng& rng, const Pose& pa, const std::vector<Vec3>& la,
 }
 
 /// One random penetrating polytope pair; case i of the sweep (every fourth through Shape).
-void polytope_pair_case(std::uint64_t seed, int i, oracle::DepthWorst& worst) {
+/// `allow_limit`: IterationLimit is accepted, within its error_bound (see
+/// NeedlesWithinTheToleranceOfTouching).
+void polytope_pair_case(std::uint64_t seed, int i, oracle::DepthWorst& worst,
+                        bool allow_limit = false) {
   SCOPED_TRACE(oracle::seed_note(seed));
   Rng rng(seed);
   const int ka = rng.integer(0, kPointSetKinds - 1);
@@ -149,20 +152,30 @@ void polytope_pair_case(std::uint64_t seed, int i, oracle::DepthWorst& worst) {
     got = mink::contact(a.value(), pa, b.value(), pb);
   }
   oracle::expect_contact_matches(depth, oracle::points_support(wa), oracle::points_support(wb), got,
-                                 size, pa.translation.norm(), worst, oracle::kDepthTolerance, false,
-                                 ka == kNeedle || kb == kNeedle);
+                                 size, pa.translation.norm(), worst, oracle::kDepthTolerance,
+                                 allow_limit, ka == kNeedle || kb == kNeedle);
 }
 
-/// Known failure, kept out of the sweep and run here (disabled) so it stays visible: a needle
-/// 1e-8 thick against a set with duplicate points, penetrating by 2.6e-9 of the size. EPA's
-/// expansions stop keeping the polytope convex there and it stops with a bracket of 2.5e-9 of
-/// the size (reported in error_bound): the depth is within the bar, the normal's optimality and
-/// the witness points are not.
-constexpr std::uint64_t kKnownNeedleFailure = 405913;
+/// A needle 1e-8 thick against a set with duplicate points, penetrating by 2.6e-9 of the size:
+/// EPA's nearest face is a sliver (a vertex of A against three points of the needle) and the
+/// origin's projection lies outside it by 5e-9 of the size. Clamped barycentric coordinates put
+/// the witness points 1e-3 of the size apart from -depth * normal; the sliver's point nearest the
+/// projection does not. Kept as its own test, as well as in the sweep, to name it.
+TEST(ContactBruteForce, NeedleAgainstDuplicatesSliverFace) {
+  oracle::DepthWorst worst("contact polytope-polytope (needle sliver)");
+  polytope_pair_case(405913, 5913, worst);
+}
 
-TEST(ContactBruteForce, DISABLED_KnownFailureNeedleAgainstDuplicates) {
-  oracle::DepthWorst worst("contact polytope-polytope (known failure)");
-  polytope_pair_case(kKnownNeedleFailure, 5913, worst);
+/// Needles 1e-8 thick (or thinner) against duplicate-point and round sets, from a sweep 30 times
+/// the default: the pairs touch or penetrate by 2e-12 to 2.5e-10 of the size, GJK crawls along
+/// the needle without enclosing the origin, and the answer is IterationLimit with a distance or
+/// depth within its error_bound, which is within the 1e-9 bar. The support descent behind those
+/// answers drifted from a unit normal by up to 2e-9 (its step direction, from a gradient 1e-9 of
+/// the support point, is not orthogonal to the normal to rounding); the normal must be unit.
+TEST(ContactBruteForce, NeedlesWithinTheToleranceOfTouching) {
+  oracle::DepthWorst worst("contact polytope-polytope (needles touching)");
+  for (const std::uint64_t seed : {429535, 455446, 562496, 418206, 576388})
+    polytope_pair_case(seed, static_cast<int>(seed - 400000), worst, /*allow_limit=*/true);
 }
 
 TEST(ContactBruteForce, PolytopePairs) {
@@ -170,7 +183,6 @@ TEST(ContactBruteForce, PolytopePairs) {
   const int n = oracle::sweep_count(6000);
   oracle::DepthWorst worst("contact polytope-polytope");
   for (int i = 0; i < n; ++i) {
-    if (base + i == kKnownNeedleFailure) continue;
     polytope_pair_case(base + i, i, worst);
   }
   EXPECT_GT(worst.penetrating, n * 8 / 10) << "the sweep should be mostly penetrating";
