@@ -68,7 +68,8 @@ using ContactResult = ContactResultT<double>;
 namespace detail {
 
 /// Fills the distance or depth, normal and points of `result` from the closest points of the
-/// cores, on_a and on_b, in the frame they are given in (the caller maps them to the world), and
+/// cores, on_a and on_b, in the world frame (or shifted from it; see separated_from_cores() in
+/// gjk/distance.hpp for why callers map them first), and
 /// `normal`, the unit direction from on_a to on_b: `core_distance` is the distance of the cores
 /// (B's core minus A's along the normal), `inside` the sum of the radii plus the touching
 /// tolerance.
@@ -145,32 +146,28 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     const Vec3T<S>&ha = detail::BoxCore<A>::half_extents(a),
           &hb = detail::BoxCore<B>::half_extents(b);
     // No bias towards face axes (the manifold's, for stable normals): the least overlap, exact.
-    const auto axis = detail::box_box_axis(ha, hb, rel.rotation, rel.translation, S(0));
+    const auto axes = detail::box_pair_axes(ha, hb, rel.rotation, rel.translation);
+    const auto axis = detail::box_best_axis(axes, rel.rotation, rel.translation, S(0));
     Vec3T<S> on_a, on_b, normal;
     S core_distance;
     if (axis.overlap < -touch &&
-        detail::box_box_closest(ha, hb, rel.rotation, rel.translation, axis, true, on_a, on_b,
+        detail::box_box_closest(ha, hb, rel.rotation, rel.translation, axes, axis, true, on_a, on_b,
                                 normal, core_distance)) {
-      detail::contact_from_cores(on_a, on_b, normal, core_distance, radius_a, radius_b, inside,
-                                 result);
-      result.normal = pose_a.rotate(result.normal);
-      result.point_a = pose_a.apply(result.point_a);
-      result.point_b = pose_a.apply(result.point_b);
+      detail::contact_from_cores(pose_a.apply(on_a), pose_a.apply(on_b), pose_a.rotate(normal),
+                                 core_distance, radius_a, radius_b, inside, result);
       // The axis warm-starts GJK the next time, should the pair move out of closed form.
       detail::save_cache(
           cache, 1, [&normal](int) { return normal; }, normal);
       result.status = result.intersect ? Status::Intersecting : Status::Separated;
       return result;
     }
-    if (axis.overlap > touch && detail::box_box_closest(ha, hb, rel.rotation, rel.translation, axis,
-                                                        false, on_a, on_b, normal, core_distance)) {
+    if (axis.overlap > touch &&
+        detail::box_box_closest(ha, hb, rel.rotation, rel.translation, axes, axis, false, on_a,
+                                on_b, normal, core_distance)) {
       // The deepest point of one box over the other's face, or two crossing edges: no clipping.
+      detail::contact_from_cores(pose_a.apply(on_a), pose_a.apply(on_b), pose_a.rotate(normal),
+                                 core_distance, radius_a, radius_b, inside, result);
       result.status = Status::Intersecting;
-      result.intersect = true;
-      result.depth = radius_a + radius_b - core_distance;
-      result.normal = pose_a.rotate(normal);
-      result.point_a = pose_a.apply(Vec3T<S>(on_a + radius_a * normal));
-      result.point_b = pose_a.apply(Vec3T<S>(on_b - radius_b * normal));
       return result;
     }
     if (axis.overlap > touch) {
@@ -208,16 +205,14 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     const S radii = radius_a + radius_b;
     const auto cores =
         detail::separate_cores(diff, gjk, radii, size, tolerances, result.iterations);
-    detail::contact_from_cores(cores.on_a, cores.on_b, cores.normal, gjk.upper, radius_a, radius_b,
-                               inside, result);
+    detail::contact_from_cores(pose_a.apply(cores.on_a), pose_a.apply(cores.on_b),
+                               pose_a.rotate(cores.normal), gjk.upper, radius_a, radius_b, inside,
+                               result);
     if (cores.status == Status::Intersecting) {
       // Curved cores that touch, beyond `inside` by GJK's crawl only: depth and distance 0.
       result.intersect = true;
       result.distance = S(0);
     }
-    result.normal = pose_a.rotate(result.normal);
-    result.point_a = pose_a.apply(result.point_a);
-    result.point_b = pose_a.apply(result.point_b);
     result.error_bound = std::max(S(0), gjk.upper - cores.lower);
     result.status = cores.status;
     return result;

@@ -1,8 +1,9 @@
 /// @file box_box.hpp
 /// Two boxes (Box, or Rounded<Box>: the run-time Shape's box core) need no GJK or EPA while the
-/// separating axis test can answer: intersect() asks box_box_verdict(), contact() and manifold()
-/// box_box_axis() when the cores overlap, distance() and contact() box_box_closest() when they
-/// are apart.
+/// separating axis test can answer: intersect() asks box_box_verdict() as it computes the axes;
+/// distance() and contact() compute all 15 (box_pair_axes()) once, for the verdict, the best axis
+/// (box_best_axis()) and the closest or deepest points (box_box_closest()); manifold() asks
+/// box_box_axis().
 ///
 /// Penetration depth and normal of two overlapping boxes by the separating axis test: the 3 + 3
 /// face axes and the 9 edge-edge cross products. For two boxes the least overlap over these
@@ -106,18 +107,26 @@ struct BoxBoxAxis {
   int index;
 };
 
-/// The separating-axis answer for box A (half extents ha) and box B (half extents hb) whose pose
-/// in A's frame is (r, t). Face axes win ties with edge axes, and an edge axis must beat the best
-/// face by `edge_bias` (unit: length) to be taken, so that a box resting on another keeps the face
-/// normal under rounding. Edge axes from nearly parallel edges (|cross| < 1e-6) carry no
-/// information beyond the face axes and are skipped.
+/// All 15 axes of box A (half extents ha) and box B (half extents hb) whose pose in A's frame is
+/// (r, t).
 template <class S>
-BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
-                           const Vec3T<S>& t, S edge_bias) {
+BoxPairAxes<S> box_pair_axes(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
+                             const Vec3T<S>& t) {
   const Mat3T<S> abs_r = r.cwiseAbs();
   BoxPairAxes<S> axes;
   box_face_axes(ha, hb, abs_r, r, t, axes);
   box_edge_axes(ha, hb, abs_r, r, t, axes);
+  return axes;
+}
+
+/// The separating-axis answer from the axes of box_pair_axes() for the same pose (r, t) of B in
+/// A's frame. Face axes win ties with edge axes, and an edge axis must beat the best
+/// face by `edge_bias` (unit: length) to be taken, so that a box resting on another keeps the face
+/// normal under rounding. Edge axes from nearly parallel edges (|cross| < 1e-6) carry no
+/// information beyond the face axes and are skipped.
+template <class S>
+BoxBoxAxis<S> box_best_axis(const BoxPairAxes<S>& axes, const Mat3T<S>& r, const Vec3T<S>& t,
+                            S edge_bias) {
   // The least face overlap (the first on ties).
   int best = 0;
   for (int k = 1; k < 6; ++k)
@@ -160,34 +169,22 @@ BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S
   return result;
 }
 
+/// box_best_axis() of box_pair_axes(): the separating-axis answer for boxes A and B.
+template <class S>
+BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
+                           const Vec3T<S>& t, S edge_bias) {
+  return box_best_axis(box_pair_axes(ha, hb, r, t), r, t, edge_bias);
+}
+
 /// What the separating axis test alone can tell about two boxes: `gap` (unit: length, >= 0) is
 /// how far apart their cores may be and still count as intersecting (the radii plus the touching
 /// tolerance).
 enum class BoxBoxVerdict { Separated, Overlapping, Unsure };
 
-/// Separated as soon as one of the 15 axes separates the boxes by more than `gap` (the distance
-/// is at least that, to rounding, for the rotation r as given); Overlapping when no axis separates
-/// them at all (the separating axis theorem); Unsure in between, and also when an edge axis is
-/// nearly degenerate (edges parallel to 1e-6 but not exactly), where the theorem's axis cannot be
-/// trusted to rounding.
+/// The verdict's part from the edge axes of `axes`, the face axes having shown no gap above `gap`
+/// (`apart`: some showed a gap above 0).
 template <class S>
-BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
-                              const Vec3T<S>& t, S gap) {
-  const Mat3T<S> abs_r = r.cwiseAbs();
-  // Face axes one at a time: most separated pairs are told apart by the first ones.
-  bool apart = false;  // some axis shows a gap > 0 (but not > `gap`)
-  for (int i = 0; i < 3; ++i) {
-    const S g = -box_face_overlap_a(i, ha, hb, abs_r, t);
-    if (g > gap) return BoxBoxVerdict::Separated;
-    apart |= g > S(0);
-  }
-  for (int j = 0; j < 3; ++j) {
-    const S g = -box_face_overlap_b(j, ha, hb, abs_r, S(r.col(j).dot(t)));
-    if (g > gap) return BoxBoxVerdict::Separated;
-    apart |= g > S(0);
-  }
-  BoxPairAxes<S> axes;
-  box_edge_axes(ha, hb, abs_r, r, t, axes);
+BoxBoxVerdict box_edge_verdict(const BoxPairAxes<S>& axes, S gap, bool apart) {
   bool degenerate = false;
   for (int k = 0; k < 9; ++k) {
     const S g = -axes.edge_overlap[k], length_sq = axes.edge_length_sq[k];
@@ -201,6 +198,45 @@ BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3
     apart |= g > S(0);
   }
   return !apart && !degenerate ? BoxBoxVerdict::Overlapping : BoxBoxVerdict::Unsure;
+}
+
+/// Separated as soon as one of the 15 axes separates the boxes by more than `gap` (the distance
+/// is at least that, to rounding, for the rotation r as given); Overlapping when no axis separates
+/// them at all (the separating axis theorem); Unsure in between, and also when an edge axis is
+/// nearly degenerate (edges parallel to 1e-6 but not exactly), where the theorem's axis cannot be
+/// trusted to rounding. This form computes the axes as it goes, for intersect(): most separated
+/// pairs are told apart by the first face axes.
+template <class S>
+BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
+                              const Vec3T<S>& t, S gap) {
+  const Mat3T<S> abs_r = r.cwiseAbs();
+  bool apart = false;  // some axis shows a gap > 0 (but not > `gap`)
+  for (int i = 0; i < 3; ++i) {
+    const S g = -box_face_overlap_a(i, ha, hb, abs_r, t);
+    if (g > gap) return BoxBoxVerdict::Separated;
+    apart |= g > S(0);
+  }
+  for (int j = 0; j < 3; ++j) {
+    const S g = -box_face_overlap_b(j, ha, hb, abs_r, S(r.col(j).dot(t)));
+    if (g > gap) return BoxBoxVerdict::Separated;
+    apart |= g > S(0);
+  }
+  BoxPairAxes<S> axes;
+  box_edge_axes(ha, hb, abs_r, r, t, axes);
+  return box_edge_verdict(axes, gap, apart);
+}
+
+/// The same verdict from all 15 axes already computed (box_pair_axes()), for the queries that
+/// need the best axis as well.
+template <class S>
+BoxBoxVerdict box_box_verdict(const BoxPairAxes<S>& axes, S gap) {
+  bool apart = false;
+  for (int k = 0; k < 6; ++k) {
+    const S g = -axes.face_overlap[k];
+    if (g > gap) return BoxBoxVerdict::Separated;
+    apart |= g > S(0);
+  }
+  return box_edge_verdict(axes, gap, apart);
 }
 
 /// The corner of a box (half extents h) farthest along d, except that a coordinate whose |d_k| is
@@ -289,8 +325,8 @@ bool closest_over_face(const Vec3T<S>& h_ref, const Vec3T<S>& h_other, const Mat
 }
 
 /// Closest points of two boxes (A: half extents ha; B: half extents hb, pose (r, t) in A's frame)
-/// in closed form, from the separating axis that box_box_axis() found, or their deepest points
-/// when they overlap.
+/// in closed form, from their axes (box_pair_axes()) and the separating axis that box_best_axis()
+/// found in them, or their deepest points when they overlap.
 ///
 /// Apart (`apart`: axis.overlap < 0): the distance of two separated convex sets is the largest
 /// gap over all directions, so a point p of A and a point q of B with q - p = gap * n for some
@@ -314,8 +350,8 @@ bool closest_over_face(const Vec3T<S>& h_ref, const Vec3T<S>& h_other, const Mat
 /// counts as an edge or a face, which changes the distance by at most 2e-12 of the boxes' size.
 template <class S>
 bool box_box_closest(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r, const Vec3T<S>& t,
-                     const BoxBoxAxis<S>& axis, bool apart, Vec3T<S>& on_a, Vec3T<S>& on_b,
-                     Vec3T<S>& normal, S& distance) {
+                     const BoxPairAxes<S>& axes, const BoxBoxAxis<S>& axis, bool apart,
+                     Vec3T<S>& on_a, Vec3T<S>& on_b, Vec3T<S>& normal, S& distance) {
   // A's face i on the `side` towards B.
   auto over_a = [&](int i, S side) {
     if (!closest_over_face(ha, hb, r, t, i, side, on_a, on_b, distance)) return false;
@@ -335,24 +371,19 @@ bool box_box_closest(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r, 
     normal = -side * r.col(j);
     return !apart || distance > S(0);
   };
-  // The face axis of each box with the largest gap, on its side towards the other box.
+  // The face axis of each box with the largest gap (least overlap), on its side towards the
+  // other box.
   auto over_best_face_a = [&] {
     int best = 0;
-    S best_gap = -std::numeric_limits<S>::infinity();
-    for (int i = 0; i < 3; ++i) {
-      const S gap = std::abs(t[i]) - ha[i] - (r.row(i).cwiseAbs().dot(hb));
-      if (gap > best_gap) best_gap = gap, best = i;
-    }
+    for (int i = 1; i < 3; ++i)
+      if (axes.face_overlap[i] < axes.face_overlap[best]) best = i;
     return over_a(best, sign_nonneg(t[best]));
   };
   auto over_best_face_b = [&] {
     int best = 0;
-    S best_gap = -std::numeric_limits<S>::infinity();
-    for (int j = 0; j < 3; ++j) {
-      const S gap = std::abs(r.col(j).dot(t)) - hb[j] - (r.col(j).cwiseAbs().dot(ha));
-      if (gap > best_gap) best_gap = gap, best = j;
-    }
-    return over_b(best, -sign_nonneg(r.col(best).dot(t)));
+    for (int j = 1; j < 3; ++j)
+      if (axes.face_overlap[3 + j] < axes.face_overlap[3 + best]) best = j;
+    return over_b(best, -sign_nonneg(axes.offset_along_b[best]));
   };
   if (axis.index < 3)
     return over_a(axis.index, axis.normal[axis.index]) || (apart && over_best_face_b());
