@@ -237,6 +237,12 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   // interior, and separate_cores() tells apart from touching by the rule distance() uses.
   if (gjk.upper > touch && (epa.upper < -touch || epa.degenerate)) return cores_apart();
   const Vec3T<S>& n = epa.normal;
+  if (!(std::abs(n.squaredNorm() - S(1)) <= S(1e-6))) {
+    // EPA's face normals are products of four coordinates: beyond about 1e77 they overflow, and
+    // the normal comes out zero. Say so rather than answer with it.
+    result.error = detail::kOverflowError;
+    return result;
+  }
   result.intersect = true;
   result.depth = std::max(S(0), epa.depth) + radius_a + radius_b;
   result.error_bound = std::max(S(0), epa.upper - epa.lower);

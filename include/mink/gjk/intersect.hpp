@@ -52,12 +52,13 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b);
     const S inside = a.core_radius() + b.core_radius() +
                      tolerances.relative * (a.bounding_radius() + b.bounding_radius());
-    const S distance_sq = (on_b - on_a).squaredNorm();
-    if (!(distance_sq <= std::numeric_limits<S>::max())) {
+    const Vec3T<S> gap = on_b - on_a;
+    const S gap_sq = gap.squaredNorm();
+    if (!(gap_sq <= std::numeric_limits<S>::max())) {
       result.error = detail::kOverflowError;
       return result;
     }
-    result.intersect = distance_sq <= inside * inside;
+    result.intersect = detail::length_at_most(gap, gap_sq, inside);
     result.status = result.intersect ? Status::Intersecting : Status::Separated;
     return result;
   }
@@ -71,12 +72,7 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       result.error = detail::kOverflowError;
       return result;
     }
-    // Squared, without a root, unless a square underflows.
-    const S reach = radius + tolerances.relative * size, reach_sq = reach * reach;
-    constexpr S kSmallest = std::numeric_limits<S>::min();
-    result.intersect = gap_sq >= kSmallest && reach_sq >= kSmallest
-                           ? gap_sq <= reach_sq
-                           : detail::gap_length(gap, gap_sq) <= reach;
+    result.intersect = detail::length_at_most(gap, gap_sq, S(radius + tolerances.relative * size));
     result.status = result.intersect ? Status::Intersecting : Status::Separated;
     return result;
   }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include "mink/math/orthogonal.hpp"
@@ -75,28 +76,15 @@ struct SegmentCore<Rounded<T>> : std::bool_constant<SegmentCore<T>::value> {
 template <class A, class B>
 inline constexpr bool kSegmentCores = SegmentCore<A>::value&& SegmentCore<B>::value;
 
-/// Closest points of the core segments p and q (either may be a point): on return
-/// closest_p = p.centre + u p.half and closest_q = q.centre + v q.half with u, v in [-1, 1].
-///
-/// The squared distance |u hp - v hq - w|^2 (w = q.centre - p.centre) is a convex quadratic in
-/// (u, v). Its minimum over the square comes from the lines' critical u clamped to [-1, 1], the
-/// best v for that u, and when that v leaves [-1, 1], v clamped and the best u for it: the order
-/// of clamping of Ericson's "Real-Time Collision Detection" (5.1.9), exact for a convex quadratic
-/// on a rectangle. The critical u is Cramer's rule while the lines' angle theta has
-/// sin^2 theta >= 1/16; there the determinant |hp|^2 |hq|^2 - (hp.hq)^2 loses at most a few bits
-/// and the distance stays within 1e-14 of the size. Closer to parallel it cancels catastrophically
-/// (1e-8 errors at angles near 1e-8 rad), so u comes from cross products, whose error grows as
-/// 1 / sin theta only, which the distance's slope sin theta cancels.
-/// `u_out`, `v_out` (optional) receive u and v.
+/// The parameters u, v in [-1, 1] of closest_points_of_segments() below, for half vectors hp, hq
+/// (squared lengths a, e) and centres w apart (q's minus p's).
 template <class S>
-[[gnu::always_inline]] inline void closest_points_of_segments(
-    const CoreSegment<S>& p, const CoreSegment<S>& q, Vec3T<S>& closest_p, Vec3T<S>& closest_q,
-    S* u_out = nullptr, S* v_out = nullptr) {
-  const Vec3T<S>&hp = p.half, &hq = q.half;
-  const Vec3T<S> w = q.centre - p.centre;
-  const S a = hp.squaredNorm(), e = hq.squaredNorm(), b = hp.dot(hq);
+[[gnu::always_inline]] inline void segment_parameters(const Vec3T<S>& hp, const Vec3T<S>& hq,
+                                                      const Vec3T<S>& w, S a, S e, S& u, S& v) {
+  const S b = hp.dot(hq);
   const S c = hp.dot(w), f = hq.dot(w);  // the best u for a given v is (c + b v) / a
-  S u = S(0), v = S(0);
+  u = S(0);
+  v = S(0);
   if (!(e > S(0))) {
     // q is a point: its projection on p (or p's centre when p is a point too).
     if (a > S(0)) u = std::clamp(c / a, S(-1), S(1));
@@ -120,6 +108,50 @@ template <class S>
     v = std::clamp((b * u - f) * inverse_e, S(-1), S(1));
     u = std::clamp((c + b * v) * inverse_a, S(-1), S(1));
   }
+}
+
+/// segment_parameters() on the pair scaled to its largest coordinate, for segments whose squared
+/// lengths underflow (see closest_points_of_segments()); out of line, as it is rare.
+template <class S>
+[[gnu::noinline]] void segment_parameters_rescaled(const Vec3T<S>& hp, const Vec3T<S>& hq,
+                                                   const Vec3T<S>& w, S& u, S& v) {
+  // By a division, not a power of two: 2^1074, which a subnormal coordinate would need, overflows.
+  const S largest =
+      std::max({hp.cwiseAbs().maxCoeff(), hq.cwiseAbs().maxCoeff(), w.cwiseAbs().maxCoeff()});
+  const Vec3T<S> sp = hp / largest, sq = hq / largest;
+  segment_parameters(sp, sq, Vec3T<S>(w / largest), sp.squaredNorm(), sq.squaredNorm(), u, v);
+}
+
+/// Closest points of the core segments p and q (either may be a point): on return
+/// closest_p = p.centre + u p.half and closest_q = q.centre + v q.half with u, v in [-1, 1].
+///
+/// The squared distance |u hp - v hq - w|^2 (w = q.centre - p.centre) is a convex quadratic in
+/// (u, v). Its minimum over the square comes from the lines' critical u clamped to [-1, 1], the
+/// best v for that u, and when that v leaves [-1, 1], v clamped and the best u for it: the order
+/// of clamping of Ericson's "Real-Time Collision Detection" (5.1.9), exact for a convex quadratic
+/// on a rectangle. The critical u is Cramer's rule while the lines' angle theta has
+/// sin^2 theta >= 1/16; there the determinant |hp|^2 |hq|^2 - (hp.hq)^2 loses at most a few bits
+/// and the distance stays within 1e-14 of the size. Closer to parallel it cancels catastrophically
+/// (1e-8 errors at angles near 1e-8 rad), so u comes from cross products, whose error grows as
+/// 1 / sin theta only, which the distance's slope sin theta cancels.
+/// `u_out`, `v_out` (optional) receive u and v.
+template <class S>
+[[gnu::always_inline]] inline void closest_points_of_segments(
+    const CoreSegment<S>& p, const CoreSegment<S>& q, Vec3T<S>& closest_p, Vec3T<S>& closest_q,
+    S* u_out = nullptr, S* v_out = nullptr) {
+  const Vec3T<S>&hp = p.half, &hq = q.half;
+  const Vec3T<S> w = q.centre - p.centre;
+  S u = S(0), v = S(0);
+  // Segments shorter than 1e-77 (in double): their squared lengths and the products of those lose
+  // digits or underflow, and a segment of 1e-170 would count as a point. u and v do not change
+  // with the scale, so such a pair is solved rescaled.
+  constexpr S kTinySq = power_of_two<S>(std::numeric_limits<S>::min_exponent / 2);
+  const S a = hp.squaredNorm(), e = hq.squaredNorm();
+  if ((a < kTinySq && hp != Vec3T<S>::Zero()) || (e < kTinySq && hq != Vec3T<S>::Zero()))
+      [[unlikely]]
+    segment_parameters_rescaled(hp, hq, w, u, v);
+  else
+    segment_parameters(hp, hq, w, a, e, u, v);
   closest_p = p.centre + u * hp;
   closest_q = q.centre + v * hq;
   if (u_out) *u_out = u;
@@ -142,7 +174,7 @@ Vec3T<S> segment_gap_direction(const CoreSegment<S>& p, const CoreSegment<S>& q,
   Vec3T<S> n = gap;
   if (!make_orthogonal(n, across_p ? p.half : Vec3T<S>::Zero(),
                        across_q ? q.half : Vec3T<S>::Zero()))
-    n = gap.normalized();  // the gap is rounding only: keep its direction
+    n = unit_of(gap, gap.squaredNorm(), length_of(gap, gap.squaredNorm()));  // rounding only
   return n;
 }
 
@@ -174,14 +206,18 @@ typename A::Scalar closest_core_points(const A& a, const PoseT<typename A::Scala
   closest_points_of_segments(p, q, on_a, on_b, &u, &v);
   const Vec3T<S> gap = on_b - on_a;
   const S gap_sq = gap.squaredNorm();
-  const S length = std::sqrt(gap_sq);
-  if (unit && gap_sq > S(0)) {
+  // length_of() and unit_of() with one range test on the hot path: a square in the normal range
+  // has an exact enough root and reciprocal.
+  const bool plain =
+      gap_sq >= std::numeric_limits<S>::min() && gap_sq <= std::numeric_limits<S>::max();
+  const S length = plain ? std::sqrt(gap_sq) : gap.stableNorm();
+  if (unit && length > S(0)) {
     // The terms the gap was computed from set its rounding, not the points themselves (a
     // sphere's centre at A's origin and a point 1e-12 from it on a long capsule's axis).
     const S terms_sq = p.centre.squaredNorm() + p.half.squaredNorm() + q.centre.squaredNorm() +
                        q.half.squaredNorm();
     if (gap_sq >= S(1e-6) * terms_sq)
-      *unit = gap * (S(1) / length);
+      *unit = plain ? Vec3T<S>(gap * (S(1) / length)) : unit_of(gap, gap_sq, length);
     else
       *unit = segment_gap_direction(p, q, u, v, gap);
   }

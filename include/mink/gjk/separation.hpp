@@ -33,10 +33,10 @@ void find_separation(const CoreDifference<A, B>& diff, const GjkOutcome<typename
   gjk.simplex.witness_points(out.on_a, out.on_b);
   out.normal = separation_direction(gjk.simplex, gjk.v);
   out.lower = gjk.lower;
-  const S length = gjk.v.norm();
-  const Vec3T<S> plain = length > S(0) ? Vec3T<S>(-gjk.v / length) : out.normal;
+  const S vv = gjk.v.squaredNorm(), length = length_of(gjk.v, vv);
+  const Vec3T<S> plain = length > S(0) ? Vec3T<S>(-unit_of(gjk.v, vv, length)) : out.normal;
   const bool plain_differs = (out.normal - plain).squaredNorm() > S(1e-24);
-  const S lower_length = gjk.lower_v.norm();
+  const S lower_sq = gjk.lower_v.squaredNorm(), lower_length = length_of(gjk.lower_v, lower_sq);
   const bool lower_differs = gjk.lower > S(0) && lower_length > S(0) && gjk.lower_v != gjk.v;
   const bool apart = gjk.upper - gjk.lower > S(2) * touch;
   if (!plain_differs && !lower_differs && !apart) return;
@@ -58,11 +58,11 @@ void find_separation(const CoreDifference<A, B>& diff, const GjkOutcome<typename
   // which is still a proven separation.
   const bool lower_wins = lower_differs && -gjk.lower < least.value;
   if (gjk.upper + (lower_wins ? -gjk.lower : least.value) > S(2) * touch) {
-    if (lower_wins) measure(Vec3T<S>(-gjk.lower_v / lower_length));
+    if (lower_wins) measure(Vec3T<S>(-unit_of(gjk.lower_v, lower_sq, lower_length)));
     descend_support(diff, -gjk.upper, touch, iterations + max_iterations / 4, iterations, least);
   } else if (lower_wins) {
     least.value = -gjk.lower;
-    least.normal = -gjk.lower_v / lower_length;
+    least.normal = -unit_of(gjk.lower_v, lower_sq, lower_length);
   }
   out.lower = std::max(out.lower, -least.value);
   out.normal = free_normal;

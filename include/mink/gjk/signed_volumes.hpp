@@ -257,8 +257,7 @@ template <class S>
 /// product (make_orthogonal).
 template <class S>
 Vec3T<S> separation_direction(const SimplexT<S>& simplex, const Vec3T<S>& v) {
-  const S length_v = v.norm();
-  if (!(length_v > S(0))) return Vec3T<S>::UnitZ();  // no simplex: any unit vector
+  if (v == Vec3T<S>::Zero()) return Vec3T<S>::UnitZ();  // no simplex: any unit vector
   Vec3T<S> n = -v;
   const Vec3T<S> zero = Vec3T<S>::Zero();
   const Vec3T<S> e1 =
@@ -266,7 +265,10 @@ Vec3T<S> separation_direction(const SimplexT<S>& simplex, const Vec3T<S>& v) {
   const Vec3T<S> e2 =
       simplex.size >= 3 ? Vec3T<S>(simplex.vertices[2].w - simplex.vertices[0].w) : zero;
   // Nothing left but rounding (v was rounding itself): keep -v.
-  if (simplex.size == 4 || !make_orthogonal(n, e1, e2)) n = -v / length_v;
+  if (simplex.size == 4 || !make_orthogonal(n, e1, e2)) {
+    const S vv = v.squaredNorm();  // (tiny or huge v: length_of() and unit_of() keep n unit)
+    n = -unit_of(v, vv, length_of(v, vv));
+  }
   return n;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "mink/math/vec.hpp"
 
@@ -34,16 +35,18 @@ bool make_orthogonal(Vec3T<S>& n, const Vec3T<S>& e1, const Vec3T<S>& e2) {
   const S ee1 = e1.squaredNorm(), ee2 = e2.squaredNorm();
   const Vec3T<S> both = e1.cross(e2);
   const S bb = both.squaredNorm();
-  if (bb > S(1e-8) * ee1 * ee2 && bb > S(0)) {
+  // (Not where |both|^2 underflows: its root would be off, and the normal not unit.)
+  if (bb > S(1e-8) * ee1 * ee2 && bb >= std::numeric_limits<S>::min()) {
     n = (both.dot(n) >= S(0) ? S(1) : S(-1)) / std::sqrt(bb) * both;
     return true;
   }
   Vec3T<S> m = n;
   if (ee1 > S(0)) m -= e1 * (m.dot(e1) / ee1);
   if (ee2 > S(0)) m -= e2 * (m.dot(e2) / ee2);
-  const S length = m.norm();
-  if (!(length > S(1e-3) * n.norm())) return false;
-  n = m / length;
+  const S mm = m.squaredNorm();
+  const S length = length_of(m, mm);
+  if (!(length > S(1e-3) * length_of(n, S(n.squaredNorm())))) return false;
+  n = unit_of(m, mm, length);
   return true;
 }
 

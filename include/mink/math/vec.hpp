@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>
+#include <limits>
 
 namespace mink {
 
@@ -24,5 +25,51 @@ template <class S>
 inline bool is_finite(const Vec3T<S>& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }
+
+namespace detail {
+
+/// 2^k, at compile time.
+template <class S>
+constexpr S power_of_two(int k) {
+  S x = S(1);
+  for (; k > 0; --k) x *= S(2);
+  for (; k < 0; ++k) x *= S(0.5);
+  return x;
+}
+
+/// |v| from its square `v_sq` (= v.squaredNorm()), also where that square underflows (vectors of
+/// 1e-154 and shorter: the root of the rounded square is off by up to 1e-3, and a normal
+/// v / |v| then is not unit) or overflows (1e154 and longer): Eigen's stableNorm() rescales first.
+template <class S>
+S length_of(const Vec3T<S>& v, S v_sq) {
+  return v_sq >= std::numeric_limits<S>::min() && v_sq <= std::numeric_limits<S>::max()
+             ? std::sqrt(v_sq)
+             : v.stableNorm();
+}
+
+/// v / |v| for v != 0, given v_sq = v.squaredNorm() and length = length_of(v, v_sq). Where the
+/// square underflows or overflows, v is divided by its largest component first: 1 / |v| overflows
+/// below 1e-308, and a subnormal |v| carries too few digits for the plain quotient to be unit (so
+/// does Eigen's stableNormalized(), which divides by such a product).
+template <class S>
+Vec3T<S> unit_of(const Vec3T<S>& v, S v_sq, S length) {
+  if (v_sq >= std::numeric_limits<S>::min() && v_sq <= std::numeric_limits<S>::max())
+    return v * (S(1) / length);
+  const Vec3T<S> scaled = v / v.cwiseAbs().maxCoeff();  // components in [-1, 1], one of them +-1
+  return scaled / scaled.norm();
+}
+
+/// |v| <= reach (>= 0), from |v|'s square `v_sq`: compared on squares, with no root, unless a
+/// square underflows or overflows, where length_of() decides.
+template <class S>
+bool length_at_most(const Vec3T<S>& v, S v_sq, S reach) {
+  const S reach_sq = reach * reach;
+  constexpr S kSmallest = std::numeric_limits<S>::min(), kLargest = std::numeric_limits<S>::max();
+  return v_sq >= kSmallest && reach_sq >= kSmallest && v_sq <= kLargest && reach_sq <= kLargest
+             ? v_sq <= reach_sq
+             : length_of(v, v_sq) <= reach;
+}
+
+}  // namespace detail
 
 }  // namespace mink

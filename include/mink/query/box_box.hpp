@@ -259,8 +259,8 @@ inline constexpr double kBoxTie = 1e-12;
 
 /// The closest points of A's and B's support edges along the edge axis `axis` (A's frame), when
 /// both lie inside their edges: two crossing edges, whose closest points differ along the axis
-/// only. False when an edge has no length, the support feature along the axis is a face (a tie),
-/// or a closest point is an end point.
+/// only. False when an edge has no length (1e-12 of the boxes' size), the support feature along the
+/// axis is a face (a tie), or a closest point is an end point.
 template <class S>
 bool box_box_crossing_edges(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
                             const Vec3T<S>& t, const BoxBoxAxis<S>& axis, Vec3T<S>& on_a,
@@ -268,7 +268,10 @@ bool box_box_crossing_edges(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<
   const S tie = S(kBoxTie);
   const Vec3T<S>& n = axis.normal;
   const int i = (axis.index - 6) / 3, j = (axis.index - 6) % 3;
-  if (!(ha[i] > S(0) && hb[j] > S(0))) return false;
+  // Edges shorter than the tie tolerance of the boxes' size are corners (a box flat to 1e-300):
+  // their closest points need not differ along the axis.
+  const S shortest = tie * std::max(ha.maxCoeff(), hb.maxCoeff());
+  if (!(ha[i] > shortest && hb[j] > shortest)) return false;
   const Vec3T<S> d_b = -(r.transpose() * n);
   Vec3T<S> centre_a = Vec3T<S>::Zero(), corner_b = Vec3T<S>::Zero(), half_a = Vec3T<S>::Zero();
   for (int k = 0; k < 3; ++k) {

@@ -73,12 +73,6 @@ Vec3T<typename A::Scalar> point_box_gap(const A& a, const PoseT<typename A::Scal
   return p - p.cwiseMax(-h).cwiseMin(h);
 }
 
-/// |gap|, also where its square underflows (cores 1e-154 apart and closer).
-template <class S>
-S gap_length(const Vec3T<S>& gap, S gap_sq) {
-  return gap_sq >= std::numeric_limits<S>::min() ? std::sqrt(gap_sq) : gap.stableNorm();
-}
-
 /// The point core against the box core in the box's frame: the point `p`, the box's point nearest
 /// to it (outside) or below it on the nearest face (inside), the box's outward normal there, and
 /// the signed distance (negative inside: minus the depth). The point's depth below a face ties
@@ -103,8 +97,9 @@ PointBoxLocal<typename A::Scalar> point_box_local(const A& a,
   out.tie = false;
   const Vec3T<S> gap = p - out.on_box;
   if (gap != Vec3T<S>::Zero()) {  // a coordinate was clamped: outside
-    out.signed_distance = gap_length(gap, gap.squaredNorm());
-    out.out_of_box = gap / out.signed_distance;
+    const S gap_sq = gap.squaredNorm();
+    out.signed_distance = length_of(gap, gap_sq);
+    out.out_of_box = unit_of(gap, gap_sq, out.signed_distance);
   } else {
     // Inside (or on the surface): out through the face nearest to p.
     const Vec3T<S> below = h - p.cwiseAbs();

@@ -4,6 +4,7 @@
 // by hand or by the oracles in tests/oracle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 #include <vector>
@@ -342,6 +343,62 @@ TEST(GjkNasty, FlushBoxesWitnessesOnTheSurfaces) {
   EXPECT_LE(la.cwiseAbs().maxCoeff(), 1 + 1e-12) << la.transpose();
   EXPECT_LE(lb.cwiseAbs().maxCoeff(), 1 + 1e-12) << lb.transpose();
   EXPECT_LE((c.point_b - c.point_a + c.depth * c.normal).norm(), 1e-12);
+}
+
+}  // namespace
+
+namespace {
+
+/// Cores at tiny and subnormal distances (found by fuzz/fuzz_queries.cpp): the squared distance
+/// underflows, so a root of it is off by up to 1e-3 and a reciprocal of a subnormal length
+/// overflows. The distance must still be the gap, the normal unit, and the verdict right.
+/// `closest` is B's translation minus A's closest point, which the gap runs along (computed in
+/// long double, whose exponent range has room for these squares).
+void expect_tiny_gap(const mink::Shape& a, const mink::Shape& b, const Vec3& translation_b,
+                     const Vec3& closest_on_a) {
+  SCOPED_TRACE(testing::Message() << "B at (" << translation_b.x() << ", " << translation_b.y()
+                                  << ", " << translation_b.z() << ")");
+  const Pose pa = Pose::identity(), pb = Pose::from_translation(translation_b);
+  long double sq = 0;
+  for (int i = 0; i < 3; ++i) {
+    const long double g = static_cast<long double>(translation_b[i]) - closest_on_a[i];
+    sq += g * g;
+  }
+  const double expected = static_cast<double>(std::sqrt(sq));
+  // A subnormal gap carries an absolute rounding of 5e-324 per coordinate.
+  const double tolerance = 1e-12 * expected + 2e-323;
+  const auto d = mink::distance(a, pa, b, pb);
+  ASSERT_EQ(d.status, mink::Status::Separated) << d.error;
+  EXPECT_NEAR(d.distance, expected, tolerance);
+  EXPECT_NEAR(d.normal.norm(), 1.0, 1e-12);
+  const auto c = mink::contact(a, pa, b, pb);
+  EXPECT_FALSE(c.intersect);
+  EXPECT_NEAR(c.normal.norm(), 1.0, 1e-12);
+  EXPECT_NEAR(c.distance, expected, tolerance);
+  EXPECT_FALSE(mink::intersect(a, pa, b, pb).intersect);
+}
+
+TEST(GjkNasty, TinyAndSubnormalGapsGiveUnitNormals) {
+  const auto point = mink::Shape::point(Vec3::Zero()).value();
+  const auto dot = mink::Shape::sphere(0).value();
+  const double h = 1e-170;
+  const auto tiny_box = mink::Shape::box(Vec3(h, h, h)).value();
+  const auto tiny_capsule = mink::Shape::capsule(0, h).value();
+  for (const double length : {1e-150, 3.4e-161, 1e-200, 1e-310, 1.5e-323, 4.9e-324}) {
+    for (const Vec3& direction : {Vec3(1, 0, 0), Vec3(0, 0, -1), Vec3(1, 1, 0), Vec3(1, -2, 3)}) {
+      const Vec3 gap = direction * length;
+      if (gap == Vec3::Zero()) continue;
+      expect_tiny_gap(point, dot, gap, Vec3::Zero());
+      // Past a box or a capsule of 1e-170 along x, by a gap that 1e-170 can resolve (1.2e-321,
+      // the square of 3.4e-161, is subnormal): the nearest point is on the face x = h, or on the
+      // capsule's axis.
+      if (length < 1e-185) continue;
+      const Vec3 beyond(h + std::abs(gap.x()) + length, gap.y(), gap.z());
+      if (std::abs(beyond.y()) <= h && std::abs(beyond.z()) <= h)
+        expect_tiny_gap(tiny_box, dot, beyond, Vec3(h, beyond.y(), beyond.z()));
+      expect_tiny_gap(tiny_capsule, dot, beyond, Vec3(0, 0, std::clamp(beyond.z(), -h, h)));
+    }
+  }
 }
 
 }  // namespace
