@@ -27,16 +27,26 @@ class FuzzInput {
   /// A length or coordinate: one byte picks a class of value, the next ones its digits.
   double value() {
     switch (byte() % 16) {
-      case 0: return 0.0;
-      case 1: return 1.0;
-      case 2: return -1.0;
-      case 3: return std::numeric_limits<double>::quiet_NaN();
-      case 4: return std::numeric_limits<double>::infinity();
-      case 5: return std::numeric_limits<double>::denorm_min();
-      case 6: return 1e-300;
-      case 7: return 1e300;
-      case 8: return std::ldexp(1.0, choice(120) - 60);  // a power of two, 1e-18 .. 1e18
-      case 9: return -std::ldexp(1.0, choice(120) - 60);
+      case 0:
+        return 0.0;
+      case 1:
+        return 1.0;
+      case 2:
+        return -1.0;
+      case 3:
+        return std::numeric_limits<double>::quiet_NaN();
+      case 4:
+        return std::numeric_limits<double>::infinity();
+      case 5:
+        return std::numeric_limits<double>::denorm_min();
+      case 6:
+        return 1e-300;
+      case 7:
+        return 1e300;
+      case 8:
+        return std::ldexp(1.0, choice(120) - 60);  // a power of two, 1e-18 .. 1e18
+      case 9:
+        return -std::ldexp(1.0, choice(120) - 60);
       case 10: {  // any bits at all
         std::uint64_t bits = 0;
         for (int i = 0; i < 8; ++i) bits = bits << 8 | byte();
@@ -76,7 +86,8 @@ class FuzzInput {
   Mat3 rotation(bool& proper) {
     proper = true;
     switch (byte() % 4) {
-      case 0: return Mat3::Identity();
+      case 0:
+        return Mat3::Identity();
       case 1: {
         Mat3 r = Mat3::Zero();  // a signed permutation with determinant +1
         const int k = choice(3);

@@ -25,15 +25,24 @@ using mink::Vec3;
 /// itself checked: a rejection must come with a reason).
 mink::Expected<Shape> make_shape(mink::fuzz::FuzzInput& in, int depth) {
   switch (in.choice(depth > 0 ? 11 : 13)) {
-    case 0: return Shape::sphere(in.length());
-    case 1: return Shape::box(in.lengths());
-    case 2: return Shape::capsule(in.length(), in.length());
-    case 3: return Shape::cylinder(in.length(), in.length());
-    case 4: return Shape::cone(in.length(), in.length());
-    case 5: return Shape::ellipsoid(in.lengths());
-    case 6: return Shape::point(in.vec3());
-    case 7: return Shape::segment(in.vec3(), in.vec3());
-    case 8: return Shape::triangle(in.vec3(), in.vec3(), in.vec3());
+    case 0:
+      return Shape::sphere(in.length());
+    case 1:
+      return Shape::box(in.lengths());
+    case 2:
+      return Shape::capsule(in.length(), in.length());
+    case 3:
+      return Shape::cylinder(in.length(), in.length());
+    case 4:
+      return Shape::cone(in.length(), in.length());
+    case 5:
+      return Shape::ellipsoid(in.lengths());
+    case 6:
+      return Shape::point(in.vec3());
+    case 7:
+      return Shape::segment(in.vec3(), in.vec3());
+    case 8:
+      return Shape::triangle(in.vec3(), in.vec3(), in.vec3());
     case 9:
     case 10: {
       // Up to 12 points, often repeated (duplicates) or collinear.
@@ -66,9 +75,11 @@ mink::Expected<Shape> make_shape(mink::fuzz::FuzzInput& in, int depth) {
   }
 }
 
-bool finite(const Vec3& v) { return v.allFinite(); }
+bool finite(const Vec3& v) {
+  return v.allFinite();
+}
 
-/// Promises every answer keeps, at the relative tolerance `slack` of the shapes' scale.
+/// Promises every answer keeps: InvalidInput exactly when there is an error, and then a reason.
 template <class Result>
 void check_common(const Result& r, int query) {
   if (r.status == Status::InvalidInput) {
@@ -133,8 +144,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Out of contract (a rotation that is not one): the queries must return, nothing more.
   const bool checked = proper_a && proper_b;
   // The scale the points' agreement is measured against: sizes and distances from the origin.
-  const double scale = 1 + sa.bounding_radius() + sb.bounding_radius() +
-                       pa.translation.norm() + pb.translation.norm();
+  const double scale = 1 + sa.bounding_radius() + sb.bounding_radius() + pa.translation.norm() +
+                       pb.translation.norm();
   const auto i = mink::intersect(sa, pa, sb, pb);
   const auto d = mink::distance(sa, pa, sb, pb);
   const auto c = mink::contact(sa, pa, sb, pb);
