@@ -218,6 +218,45 @@ constexpr bool closed_mesh(const TetrahedronMesh& m) {
 }
 static_assert(closed_mesh(kTetrahedron[0]) && closed_mesh(kTetrahedron[1]));
 
+/// Removes, of the three points of a sliver triangle, the one nearest the segment of the other two
+/// (the middle one), leaving the segment to grow from.
+template <class S>
+void drop_middle_point(std::vector<SimplexVertexT<S>>& vertices) {
+  int middle = 0;
+  S nearest = std::numeric_limits<S>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    const Vec3T<S>& p = vertices[i].w;
+    const Vec3T<S>& q = vertices[(i + 1) % 3].w;
+    const Vec3T<S>& r = vertices[(i + 2) % 3].w;
+    const Vec3T<S> e = r - q;
+    const S ee = e.squaredNorm();
+    const S t = ee > S(0) ? std::clamp((p - q).dot(e) / ee, S(0), S(1)) : S(0);
+    const S gap = (p - q - t * e).squaredNorm();
+    if (gap < nearest) {
+      nearest = gap;
+      middle = i;
+    }
+  }
+  vertices.erase(vertices.begin() + middle);
+}
+
+/// Removes one point of the closest pair among the seed's four (the later one), leaving a
+/// triangle to grow from.
+template <class S>
+void drop_closest_pair_point(std::vector<SimplexVertexT<S>>& vertices) {
+  int drop = 3;
+  S closest = std::numeric_limits<S>::infinity();
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const S gap = (vertices[i].w - vertices[j].w).squaredNorm();
+      if (gap < closest) {
+        closest = gap;
+        drop = j;
+      }
+    }
+  vertices.erase(vertices.begin() + drop);
+}
+
 /// Builds P as the tetrahedron of the 4 points of the workspace. Returns false on degeneracy.
 template <class S>
 bool seed_polytope(EpaWorkspace<S>& ws) {
@@ -438,77 +477,91 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       ws.vertices.erase(ws.vertices.begin() + drop);
     }
   }
-  if (ws.vertices.size() == 1) {
-    // A point: the farthest support point along the six axis directions.
-    SimplexVertexT<S> best_vertex;
-    S best = S(-1);
-    for (int axis = 0; axis < 6; ++axis) {
-      Vec3T<S> d = Vec3T<S>::Zero();
-      d[axis / 2] = axis % 2 ? S(-1) : S(1);
-      const SimplexVertexT<S> vertex = support(d);
-      const S dist = (vertex.w - ws.vertices[0].w).norm();
-      if (dist > best) {
-        best = dist;
-        best_vertex = vertex;
+  // Each stage adds the support point that leaves the current affine hull the most. A seed that
+  // still has a face too thin to orient (a triangle 1e-12 of the size across: a box 1e8 long whose
+  // GJK simplex put two points 2e-4 apart) is grown again without the nearer of its closest pair,
+  // up to kMaxRegrows times; giving up instead answered depth 0 for a disk sunk 0.33 into it.
+  constexpr int kMaxRegrows = 2;
+  int regrows = 0;
+  while (true) {
+    if (ws.vertices.size() == 1) {
+      // A point: the farthest support point along the six axis directions.
+      SimplexVertexT<S> best_vertex;
+      S best = S(-1);
+      for (int axis = 0; axis < 6; ++axis) {
+        Vec3T<S> d = Vec3T<S>::Zero();
+        d[axis / 2] = axis % 2 ? S(-1) : S(1);
+        const SimplexVertexT<S> vertex = support(d);
+        const S dist = (vertex.w - ws.vertices[0].w).norm();
+        if (dist > best) {
+          best = dist;
+          best_vertex = vertex;
+        }
       }
-    }
-    if (!(best > flat_tol)) {
-      const Vec3T<S> normal = fallback;
-      return degenerate(normal);
-    }
-    ws.vertices.push_back(best_vertex);
-  }
-  if (ws.vertices.size() == 2) {
-    // A segment: the support point farthest from its line, along four orthogonal directions.
-    const Vec3T<S> e = ws.vertices[1].w - ws.vertices[0].w;
-    const Vec3T<S> u1 = orthogonal(e).normalized();
-    const Vec3T<S> u2 = e.cross(u1).normalized();
-    SimplexVertexT<S> best_vertex;
-    S best = S(-1);
-    for (const Vec3T<S>& d : {u1, Vec3T<S>(-u1), u2, Vec3T<S>(-u2)}) {
-      const SimplexVertexT<S> vertex = support(d);
-      const S dist = (vertex.w - ws.vertices[0].w).cross(e).norm() / e.norm();
-      if (dist > best) {
-        best = dist;
-        best_vertex = vertex;
+      if (!(best > flat_tol)) {
+        const Vec3T<S> normal = fallback;
+        return degenerate(normal);
       }
+      ws.vertices.push_back(best_vertex);
     }
-    if (!(best > flat_tol)) {
-      // A - B is a segment: any direction orthogonal to it; prefer the line of centres'
-      // component orthogonal to it, which separates concentric-looking pairs the expected way.
-      // Projected out twice: when the line of centres runs nearly along the segment (a sphere's
-      // centre on a capsule's axis, off its middle), one projection leaves a component along it,
-      // and every unit of it costs the segment's length in depth.
-      Vec3T<S> normal = fallback;
-      if (!make_orthogonal(normal, e, e)) normal = u1;
-      return degenerate(normal);
-    }
-    ws.vertices.push_back(best_vertex);
-  }
-  if (ws.vertices.size() == 3) {
-    Vec3T<S> n;
-    if (!triangle_normal(ws.vertices[0].w, ws.vertices[1].w, ws.vertices[2].w, n)) {
-      // A sliver: drop its middle point and grow again from the segment (rare, so recursion by
-      // hand is not worth it; treat it as the segment's degenerate case).
+    if (ws.vertices.size() == 2) {
+      // A segment: the support point farthest from its line, along four orthogonal directions.
       const Vec3T<S> e = ws.vertices[1].w - ws.vertices[0].w;
-      const Vec3T<S> u = orthogonal(e).normalized();
-      return degenerate(u);
+      const Vec3T<S> u1 = orthogonal(e).normalized();
+      const Vec3T<S> u2 = e.cross(u1).normalized();
+      SimplexVertexT<S> best_vertex;
+      S best = S(-1);
+      for (const Vec3T<S>& d : {u1, Vec3T<S>(-u1), u2, Vec3T<S>(-u2)}) {
+        const SimplexVertexT<S> vertex = support(d);
+        const S dist = (vertex.w - ws.vertices[0].w).cross(e).norm() / e.norm();
+        if (dist > best) {
+          best = dist;
+          best_vertex = vertex;
+        }
+      }
+      if (!(best > flat_tol)) {
+        // A - B is a segment: any direction orthogonal to it; prefer the line of centres'
+        // component orthogonal to it, which separates concentric-looking pairs the expected way.
+        // Projected out twice: when the line of centres runs nearly along the segment (a sphere's
+        // centre on a capsule's axis, off its middle), one projection leaves a component along it,
+        // and every unit of it costs the segment's length in depth.
+        Vec3T<S> normal = fallback;
+        if (!make_orthogonal(normal, e, e)) normal = u1;
+        return degenerate(normal);
+      }
+      ws.vertices.push_back(best_vertex);
     }
-    const SimplexVertexT<S> up = support(n);
-    const SimplexVertexT<S> down = support(-n);
-    const S plane = n.dot(ws.vertices[0].w);
-    const S rise = n.dot(up.w) - plane, fall = plane - n.dot(down.w);
-    if (!(rise > flat_tol) && !(fall > flat_tol)) {
-      // A - B is flat: the side with the smaller support value is the better normal.
-      return degenerate(n.dot(up.w) <= -n.dot(down.w) ? n : Vec3T<S>(-n));
+    if (ws.vertices.size() == 3) {
+      Vec3T<S> n;
+      if (!triangle_normal(ws.vertices[0].w, ws.vertices[1].w, ws.vertices[2].w, n)) {
+        // A sliver: drop its middle point (the one nearest the segment of the other two) and
+        // grow again from the segment.
+        if (regrows++ < kMaxRegrows) {
+          drop_middle_point(ws.vertices);
+          continue;
+        }
+        const Vec3T<S> e = ws.vertices[1].w - ws.vertices[0].w;
+        return degenerate(Vec3T<S>(orthogonal(e).normalized()));
+      }
+      const SimplexVertexT<S> up = support(n);
+      const SimplexVertexT<S> down = support(-n);
+      const S plane = n.dot(ws.vertices[0].w);
+      const S rise = n.dot(up.w) - plane, fall = plane - n.dot(down.w);
+      if (!(rise > flat_tol) && !(fall > flat_tol)) {
+        // A - B is flat: the side with the smaller support value is the better normal.
+        return degenerate(n.dot(up.w) <= -n.dot(down.w) ? n : Vec3T<S>(-n));
+      }
+      // A tetrahedron with the farther apex. The origin lies within the touching tolerance of the
+      // triangle, so it may sit just outside it, on the other side: signed face distances make the
+      // first expansion push that face out towards the other apex. (A double pyramid with both
+      // apexes is not convex when the segment between them misses the triangle.)
+      ws.vertices.push_back(rise >= fall ? up : down);
     }
-    // A tetrahedron with the farther apex. The origin lies within the touching tolerance of the
-    // triangle, so it may sit just outside it, on the other side: signed face distances make the
-    // first expansion push that face out towards the other apex. (A double pyramid with both
-    // apexes is not convex when the segment between them misses the triangle.)
-    ws.vertices.push_back(rise >= fall ? up : down);
+    if (seed_polytope(ws)) break;
+    if (regrows++ >= kMaxRegrows) return degenerate(fallback);
+    ws.faces.clear();
+    drop_closest_pair_point(ws.vertices);
   }
-  if (!seed_polytope(ws)) return degenerate(fallback);
 
   // 2. Expand the face nearest the origin, until the bracket closes.
   SupportMinimum<S> least;  // the least support value seen, its direction and support point

@@ -35,6 +35,24 @@ struct IntersectResultT {
 
 using IntersectResult = IntersectResultT<double>;
 
+namespace detail {
+
+/// The answer of a closed form: the cores' closest points are `gap` apart, and within `reach`
+/// (the radii plus the touching tolerance) the shapes intersect.
+template <class S>
+[[gnu::always_inline]] inline void intersect_from_core_gap(const Vec3T<S>& gap, S reach,
+                                                           IntersectResultT<S>& result) {
+  const S gap_sq = gap.squaredNorm();
+  if (!(gap_sq <= std::numeric_limits<S>::max())) {
+    result.error = kOverflowError;
+    return;
+  }
+  result.intersect = length_at_most(gap, gap_sq, reach);
+  result.status = result.intersect ? Status::Intersecting : Status::Separated;
+}
+
+}  // namespace detail
+
 /// Do a (at pose_a) and b (at pose_b) intersect? `cache` (optional, in/out) warm-starts GJK from
 /// the previous query of the same pair.
 template <ConvexShape A, ConvexShape B>
@@ -46,34 +64,19 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   using S = typename A::Scalar;
   IntersectResultT<S> result;
   if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
+  const S radius = a.core_radius() + b.core_radius();
+  const S size = a.bounding_radius() + b.bounding_radius();
+  const S reach = radius + tolerances.relative * size;  // core distances that count as touching
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form, no iteration.
     Vec3T<S> on_a, on_b;
     detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b);
-    const S inside = a.core_radius() + b.core_radius() +
-                     tolerances.relative * (a.bounding_radius() + b.bounding_radius());
-    const Vec3T<S> gap = on_b - on_a;
-    const S gap_sq = gap.squaredNorm();
-    if (!(gap_sq <= std::numeric_limits<S>::max())) {
-      result.error = detail::kOverflowError;
-      return result;
-    }
-    result.intersect = detail::length_at_most(gap, gap_sq, inside);
-    result.status = result.intersect ? Status::Intersecting : Status::Separated;
+    detail::intersect_from_core_gap(Vec3T<S>(on_b - on_a), reach, result);
     return result;
   }
-  const S radius = a.core_radius() + b.core_radius();
-  const S size = a.bounding_radius() + b.bounding_radius();
   if constexpr (detail::kPointBox<A, B>) {
     // A sphere or point against a box: closed form, no iteration.
-    const Vec3T<S> gap = detail::point_box_gap(a, pose_a, b, pose_b);
-    const S gap_sq = gap.squaredNorm();
-    if (!(gap_sq <= std::numeric_limits<S>::max())) {
-      result.error = detail::kOverflowError;
-      return result;
-    }
-    result.intersect = detail::length_at_most(gap, gap_sq, S(radius + tolerances.relative * size));
-    result.status = result.intersect ? Status::Intersecting : Status::Separated;
+    detail::intersect_from_core_gap(detail::point_box_gap(a, pose_a, b, pose_b), reach, result);
     return result;
   }
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
@@ -81,9 +84,9 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // between 0 and the radii plus the touching tolerance (a corner near a corner: the distance
     // is then larger than any axis's gap) or an edge axis is nearly degenerate; GJK decides then.
     const PoseT<S> rel = pose_a.relative(pose_b);
-    const auto verdict = detail::box_box_verdict(
-        detail::BoxCore<A>::half_extents(a), detail::BoxCore<B>::half_extents(b), rel.rotation,
-        rel.translation, radius + tolerances.relative * size);
+    const auto verdict = detail::box_box_verdict(detail::BoxCore<A>::half_extents(a),
+                                                 detail::BoxCore<B>::half_extents(b), rel.rotation,
+                                                 rel.translation, reach);
     if (verdict != detail::BoxBoxVerdict::Unsure) {
       result.intersect = verdict == detail::BoxBoxVerdict::Overlapping;
       result.status = result.intersect ? Status::Intersecting : Status::Separated;
@@ -98,9 +101,8 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.error = detail::kOverflowError;
     return result;
   }
-  result.intersect =
-      gjk.status == Status::Intersecting ||
-      (gjk.status == Status::IterationLimit && gjk.upper <= radius + tolerances.relative * size);
+  result.intersect = gjk.status == Status::Intersecting ||
+                     (gjk.status == Status::IterationLimit && gjk.upper <= reach);
   return result;
 }
 

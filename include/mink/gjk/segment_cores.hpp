@@ -174,7 +174,7 @@ Vec3T<S> segment_gap_direction(const CoreSegment<S>& p, const CoreSegment<S>& q,
   Vec3T<S> n = gap;
   if (!make_orthogonal(n, across_p ? p.half : Vec3T<S>::Zero(),
                        across_q ? q.half : Vec3T<S>::Zero()))
-    n = unit_of(gap, gap.squaredNorm(), length_of(gap, gap.squaredNorm()));  // rounding only
+    n = unit_of(gap);  // rounding only
   return n;
 }
 

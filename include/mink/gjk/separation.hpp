@@ -53,29 +53,33 @@ void find_separation(const CoreDifference<A, B>& diff, const GjkOutcome<typename
   const S free_value = least.value;  // the best of the first pair
   const Vec3T<S> free_normal = least.normal;
   // The minimum of h is minus the distance, at least -gjk.upper. The lower bound's direction
-  // already proved its value; it needs a support point (GJK keeps only the direction) only to
-  // start the descent from. On non-finite arithmetic the descent keeps its last finite answer,
-  // which is still a proven separation.
-  const bool lower_wins = lower_differs && -gjk.lower < least.value;
-  if (gjk.upper + (lower_wins ? -gjk.lower : least.value) > S(2) * touch) {
-    if (lower_wins) measure(Vec3T<S>(-unit_of(gjk.lower_v, lower_sq, lower_length)));
+  // already proved its value; it is measured again for its support point (GJK keeps only the
+  // direction), which starts the descent and places the points below. On non-finite arithmetic
+  // the descent keeps its last finite answer, which is still a proven separation.
+  if (lower_differs && -gjk.lower < least.value)
+    measure(Vec3T<S>(-unit_of(gjk.lower_v, lower_sq, lower_length)));
+  if (gjk.upper + least.value > S(2) * touch)
     descend_support(diff, -gjk.upper, touch, iterations + max_iterations / 4, iterations, least);
-  } else if (lower_wins) {
-    least.value = -gjk.lower;
-    least.normal = -unit_of(gjk.lower_v, lower_sq, lower_length);
-  }
   out.lower = std::max(out.lower, -least.value);
   out.normal = free_normal;
-  // A new normal moves the points with it, by half the distance times the turn, off the exact
-  // pair GJK's points are (their gap is -v); and near a smooth minimum of h the turn is the
-  // square root of the gain. So a new normal only for a gain that counts: 16 times the touching
-  // tolerance (a tilt across a kink of h, a flat face's edge, gains at first order).
+  // A new normal only for a gain that counts: 16 times the touching tolerance (a tilt across a
+  // kink of h, a flat face's edge, gains at first order). Near a smooth minimum of h the turn is
+  // the square root of the gain, and the points must turn with the normal.
   if (!(free_value - least.value > S(16) * touch)) return;
-  const Vec3T<S> middle = (out.on_a + out.on_b) / S(2);
-  const S half = (out.on_b - out.on_a).norm() / S(2);
   out.normal = least.normal;
-  out.on_a = middle - half * out.normal;
-  out.on_b = middle + half * out.normal;
+  // GJK's points are a pair `gap` apart, each in its core. The one that lies on its core's
+  // support plane along the new normal (a vertex, a flat face: exact) stays; the other (a chord
+  // of a curved core, sagging under its surface) is placed `gap` from it along the normal.
+  // Turning both about their midpoint instead moved a polytope's vertex off the polytope by
+  // half the gap times the turn (8e-8 for a turn of 8e-6).
+  const Vec3T<S> offset = out.on_b - out.on_a;
+  const S gap = length_of(offset, S(offset.squaredNorm()));
+  const S below_a = out.normal.dot(least.vertex.a - out.on_a);
+  const S above_b = out.normal.dot(out.on_b - least.vertex.b);
+  if (above_b <= below_a)
+    out.on_a = out.on_b - gap * out.normal;
+  else
+    out.on_b = out.on_a + gap * out.normal;
 }
 
 /// The normal and closest points for GJK's answer on cores that GJK did not find meeting, and

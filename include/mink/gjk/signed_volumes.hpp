@@ -266,8 +266,7 @@ Vec3T<S> separation_direction(const SimplexT<S>& simplex, const Vec3T<S>& v) {
       simplex.size >= 3 ? Vec3T<S>(simplex.vertices[2].w - simplex.vertices[0].w) : zero;
   // Nothing left but rounding (v was rounding itself): keep -v.
   if (simplex.size == 4 || !make_orthogonal(n, e1, e2)) {
-    const S vv = v.squaredNorm();  // (tiny or huge v: length_of() and unit_of() keep n unit)
-    n = -unit_of(v, vv, length_of(v, vv));
+    n = -unit_of(v);  // (tiny or huge v: unit_of() keeps n unit)
   }
   return n;
 }

@@ -59,6 +59,13 @@ Vec3T<S> unit_of(const Vec3T<S>& v, S v_sq, S length) {
   return scaled / scaled.norm();
 }
 
+/// v / |v| for v != 0, at any magnitude.
+template <class S>
+Vec3T<S> unit_of(const Vec3T<S>& v) {
+  const S v_sq = v.squaredNorm();
+  return unit_of(v, v_sq, length_of(v, v_sq));
+}
+
 /// |v| <= reach (>= 0), from |v|'s square `v_sq`: compared on squares, with no root, unless a
 /// square underflows or overflows, where length_of() decides.
 template <class S>

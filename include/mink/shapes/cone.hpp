@@ -16,16 +16,17 @@ struct ConeT {
   S radius = S(0);       ///< base radius (unit: length), finite and >= 0
   S half_height = S(0);  ///< (unit: length), finite and >= 0
 
-  Vec3T<S> support_core(const Vec3T<S>& d) const {
+  Vec3T<S> support_core(const Vec3T<S>& direction) const {
     // The support is the apex or a point of the base rim, whichever reaches farther along d:
     // apex: h*dz; rim: radius*|d_xy| - h*dz.
+    const Vec3T<S> d = detail::rescaled_direction(direction);
     const S rho = std::hypot(d.x(), d.y());
     const S apex = half_height * d.z();
     const S rim = radius * rho - half_height * d.z();
     if (apex >= rim) return {S(0), S(0), half_height};
-    if (rho == S(0)) return {S(0), S(0), -half_height};
-    const S k = radius / rho;
-    return {k * d.x(), k * d.y(), -half_height};
+    S ux, uy;
+    if (!detail::planar_unit(d.x(), d.y(), ux, uy)) return {S(0), S(0), -half_height};
+    return {radius * ux, radius * uy, -half_height};
   }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return std::hypot(radius, half_height); }

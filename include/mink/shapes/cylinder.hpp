@@ -17,11 +17,10 @@ struct CylinderT {
 
   Vec3T<S> support_core(const Vec3T<S>& d) const {
     const S z = detail::sign_nonneg(d.z()) * half_height;
-    const S rho = std::hypot(d.x(), d.y());
     // Along the axis every rim point is a support point; the centre of the cap is the tie-break.
-    if (rho == S(0)) return {S(0), S(0), z};
-    const S k = radius / rho;
-    return {k * d.x(), k * d.y(), z};
+    S ux, uy;
+    if (!detail::planar_unit(d.x(), d.y(), ux, uy)) return {S(0), S(0), z};
+    return {radius * ux, radius * uy, z};
   }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return std::hypot(radius, half_height); }

@@ -8,7 +8,9 @@
 ///
 /// Each shape type provides, in its own local frame:
 ///   - `Vec3T<S> support_core(const Vec3T<S>& d) const`: a point of the core farthest along d
-///     (d need not be unit; ties are broken deterministically; d = 0 returns some core point);
+///     (d need not be unit, and may be of any finite length down to subnormal: GJK's v near
+///     touching is as short as the gap; ties are broken deterministically; d = 0 returns some
+///     core point);
 ///   - `S core_radius() const`: the radius added around the core (unit: length, >= 0);
 ///   - `S bounding_radius() const`: radius of a ball about the local origin containing the whole
 ///     shape, used to scale tolerances;
@@ -16,6 +18,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "mink/math/vec.hpp"
 
@@ -35,6 +38,41 @@ template <class S>
 inline int dominant_axis(const Vec3T<S>& v) {
   const Vec3T<S> a = v.cwiseAbs();
   return a.x() >= a.y() && a.x() >= a.z() ? 0 : (a.y() >= a.z() ? 1 : 2);
+}
+
+/// Directions whose components are all below this are scaled up by kDirectionUp (a power of two,
+/// so exactly) before a curved shape's support works with their lengths: below min / epsilon a
+/// root of a sum of squares is subnormal and keeps too few digits (hypot(5e-324, 1e-323) is off
+/// by 20 %), and radius / |d| overflows.
+template <class S>
+inline constexpr S kTinyDirection =
+    std::numeric_limits<S>::min() / std::numeric_limits<S>::epsilon();
+template <class S>
+inline constexpr S kDirectionUp = S(1) / (std::numeric_limits<S>::epsilon() *
+                                          std::numeric_limits<S>::epsilon());
+
+/// d scaled by kDirectionUp when every component is tiny; a support point depends on d's
+/// orientation only.
+template <class S>
+inline Vec3T<S> rescaled_direction(const Vec3T<S>& d) {
+  return d.cwiseAbs().maxCoeff() < kTinyDirection<S> ? Vec3T<S>(d * kDirectionUp<S>) : d;
+}
+
+/// The unit vector (ux, uy) along (x, y) for a rim point of a cylinder or cone; false when (x, y)
+/// is 0 (d along the axis). Each component over the length, not 1 / length times it: the length
+/// is tiny when d is the axis give or take 1e-300, and its reciprocal overflows.
+template <class S>
+inline bool planar_unit(S x, S y, S& ux, S& uy) {
+  S rho = std::hypot(x, y);
+  if (rho == S(0)) return false;
+  if (rho < kTinyDirection<S>) {
+    x *= kDirectionUp<S>;
+    y *= kDirectionUp<S>;
+    rho = std::hypot(x, y);
+  }
+  ux = x / rho;
+  uy = y / rho;
+  return true;
 }
 
 /// True for a finite, non-negative length.

@@ -712,6 +712,36 @@ TEST(ContactNasty, SphereCylinderFoundBySweep) {
                                  size, 2, worst, oracle::kCurvedDepthTolerance, true);
 }
 
+TEST(ContactNasty, DiskSunkIntoABoxUpTo1e8Long) {
+  // Found by fuzzing: a disk (radius 1, 0.015 thick, tilted) sunk 0.33 into the side of a box
+  // 1e8 long. GJK's simplex had two points 2e-4 apart at coordinates of 6e7, a seed face too thin
+  // to orient, and EPA gave up with depth 0. It now grows the seed again without one of them.
+  const double r = 1, h = 0.014643192291259766;
+  const mink::Cylinder disk{r, h};
+  const double c = 0.32046526175184686, s = std::sqrt(1 - c * c);
+  Pose pose_a;
+  pose_a.rotation << c, 0, s, 0, 1, 0, -s, 0, c;  // axis (s, 0, c)
+  // The box's face x = 0 runs through the disk's centre: B moves along -x by the disk's reach.
+  const double exact = r * c + h * s;
+  for (const double length : {1e4, 1e6, 67108864.0, 1e8}) {
+    for (const double z : {0.0, 7106.0}) {
+      const Box box{Vec3(1, 1, length)};
+      const Pose pose_b = at(-1, -3.637978807091713e-12, z);
+      const double size = disk.bounding_radius() + box.bounding_radius();
+      for (const bool swap : {false, true}) {
+        const auto got = swap ? mink::contact(box, pose_b, disk, pose_a)
+                              : mink::contact(disk, pose_a, box, pose_b);
+        SCOPED_TRACE(testing::Message() << "length " << length << ", z " << z << ", swap " << swap
+                                        << ": " << oracle::describe(got));
+        ASSERT_EQ(got.status, mink::Status::Intersecting);
+        EXPECT_NEAR(got.depth, exact, 1e-9 * size);
+        EXPECT_GT(got.normal.dot(Vec3(swap ? 1 : -1, 0, 0)), 0.99);
+        EXPECT_NEAR((got.point_b - got.point_a + got.depth * got.normal).norm(), 0, 1e-9 * size);
+      }
+    }
+  }
+}
+
 TEST(ContactNasty, BadInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
