@@ -81,9 +81,11 @@ inline std::string describe(const mink::ContactResult& r) {
 ///   - point_b - point_a = -depth * normal, point_a on A's support plane along the normal and
 ///     point_b on B's along -normal (the deepest points);
 ///   - status, intersect, finite outputs, unit normal.
-/// Cases whose oracle depth is within `tolerance * size` of 0 are touching: any status, and a
-/// depth below the tolerance. `allow_limit` (curved cores): IterationLimit is accepted with a
-/// finite error_bound, which then widens the depth and optimality tolerances; otherwise it fails.
+/// Cases whose oracle depth is within `tolerance * size` of 0 are touching: any status but
+/// IterationLimit (which a needle may give, with an error_bound within twice the tolerance), and
+/// a depth and distance within twice the tolerance. `allow_limit` (curved cores): IterationLimit is
+/// accepted with a finite error_bound, which then widens the depth and optimality tolerances;
+/// otherwise it fails.
 inline void expect_contact_matches(Real expected, const SupportFn& ha, const SupportFn& hb,
                                    const mink::ContactResult& got, double size,
                                    double position_scale, DepthWorst& worst,
@@ -92,15 +94,20 @@ inline void expect_contact_matches(Real expected, const SupportFn& ha, const Sup
   ASSERT_TRUE(all_finite(got)) << "non-finite output: " << describe(got);
   ASSERT_NE(got.status, mink::Status::InvalidInput) << got.error;
   EXPECT_EQ(got.error, nullptr);
+  const double tol = tolerance * size;
+  const double e = static_cast<double>(expected);
   if (got.status == mink::Status::IterationLimit) {
-    EXPECT_TRUE(allow_limit) << "iteration limit: " << describe(got);
+    // A needle touching within the tolerance: GJK crawls along it (its direction there is
+    // rounding noise) and says so, with a bound within what touching cases are held to below
+    // (2 tol; NeedlesWithinTheToleranceOfTouching).
+    const bool needle_touching = needle && std::abs(e) <= tol && got.error_bound <= 2 * tol;
+    EXPECT_TRUE(allow_limit || needle_touching)
+        << "iteration limit: " << describe(got) << "; oracle depth " << e << ", tolerance " << tol;
   }
   EXPECT_NEAR(got.normal.norm(), 1.0, 1e-12) << "normal not unit (tolerance 1e-12)";
   EXPECT_GE(got.depth, 0.0);
   EXPECT_GE(got.distance, 0.0);
   EXPECT_GE(got.error_bound, 0.0);
-  const double tol = tolerance * size;
-  const double e = static_cast<double>(expected);
   if (e < -tol) {
     ++worst.separated;
     EXPECT_EQ(got.status, mink::Status::Separated) << "oracle depth " << e << "; " << describe(got);

@@ -129,16 +129,6 @@ struct EpaOutcome {
 /// Tries per expansion before EPA gives up on keeping P convex and stops with its bracket.
 inline constexpr int kMaxExpansionAttempts = 8;
 
-/// Unnormalised counter-clockwise normal n of the triangle (p, q, r) and nn = |n|^2; false when
-/// the triangle has no area to rounding.
-template <class S>
-bool triangle_cross(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Vec3T<S>& n, S& nn) {
-  const Vec3T<S> e1 = q - p, e2 = r - p;
-  n = e1.cross(e2);
-  nn = n.squaredNorm();
-  return nn > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm() && nn > S(0);
-}
-
 /// Unit normal of the triangle (p, q, r), counter-clockwise; false when it has no area to
 /// rounding.
 template <class S>

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/support_descent.hpp"
@@ -23,6 +24,29 @@ struct CoreSeparation {
   Status status;
 };
 
+/// Makes on_a - on_b = v when GJK's v is the projection onto its triangle's plane rather than
+/// the combination of its points (closest_on_triangle(): they differ when the weights' rounding
+/// slides the combination along a long thin triangle, 1e8 for a box 1.8e13 long). The side whose
+/// support points in the simplex lie closer together (a disk's single rim point against the box's
+/// far corners) holds its point exactly; the other is placed from it.
+template <class S>
+void line_up_witness_points(const SimplexT<S>& simplex, const Vec3T<S>& v, Vec3T<S>& on_a,
+                            Vec3T<S>& on_b) {
+  const Vec3T<S> slide = on_a - on_b - v;
+  const S scale = std::max(on_a.cwiseAbs().maxCoeff(), on_b.cwiseAbs().maxCoeff());
+  const S rounding = S(64) * std::numeric_limits<S>::epsilon() * scale;
+  if (!(slide.squaredNorm() > rounding * rounding)) return;
+  S spread_a = S(0), spread_b = S(0);
+  for (int i = 1; i < simplex.size; ++i) {
+    spread_a = std::max(spread_a, (simplex.vertices[i].a - simplex.vertices[0].a).squaredNorm());
+    spread_b = std::max(spread_b, (simplex.vertices[i].b - simplex.vertices[0].b).squaredNorm());
+  }
+  if (spread_a <= spread_b)
+    on_b = on_a - v;
+  else
+    on_a = on_b + v;
+}
+
 /// The normal, closest points and proven lower bound of separate_cores() (see there), without
 /// the status.
 template <ConvexShape A, ConvexShape B>
@@ -31,6 +55,7 @@ void find_separation(const CoreDifference<A, B>& diff, const GjkOutcome<typename
                      CoreSeparation<typename A::Scalar>& out) {
   using S = typename A::Scalar;
   gjk.simplex.witness_points(out.on_a, out.on_b);
+  line_up_witness_points(gjk.simplex, gjk.v, out.on_a, out.on_b);
   out.normal = separation_direction(gjk.simplex, gjk.v);
   out.lower = gjk.lower;
   const S vv = gjk.v.squaredNorm(), length = length_of(gjk.v, vv);

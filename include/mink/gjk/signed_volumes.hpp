@@ -43,6 +43,33 @@ template <class S>
 constexpr S kFlatness =
     S(1e8) * std::numeric_limits<S>::epsilon() * std::numeric_limits<S>::epsilon();
 
+/// Counter-clockwise normal n of the triangle (p, q, r), n = (q - p) x (r - p) up to rounding,
+/// and nn = |n|^2; false when the triangle has no area to rounding (the sine of its largest angle
+/// below sqrt(kFlatness)). Taken from the two edges at the largest angle (the apex opposite the
+/// longest edge), in cyclic order: a cross product is good to eps |e1| |e2|, so from the two long
+/// edges of a triangle 2e5 long and 2 wide the normal was off by 3e-11 rad, which moved the plane
+/// by 6e-6 at the origin 2e5 away (GJK then searched past the closest face); from the short edge
+/// and a long one it is good to eps.
+template <class S>
+[[gnu::always_inline]] inline bool triangle_cross(const Vec3T<S>& p, const Vec3T<S>& q,
+                                                  const Vec3T<S>& r, Vec3T<S>& n, S& nn) {
+  const Vec3T<S> pq = q - p, qr = r - q, rp = p - r;
+  const S pq_sq = pq.squaredNorm(), qr_sq = qr.squaredNorm(), rp_sq = rp.squaredNorm();
+  if (pq_sq > qr_sq && pq_sq >= rp_sq) {  // apex r: (p - r) x (q - r)
+    n = rp.cross(Vec3T<S>(-qr));
+    nn = n.squaredNorm();
+    return nn > kFlatness<S> * rp_sq * qr_sq && nn > S(0);
+  }
+  if (rp_sq > qr_sq && rp_sq > pq_sq) {  // apex q: (r - q) x (p - q)
+    n = qr.cross(Vec3T<S>(-pq));
+    nn = n.squaredNorm();
+    return nn > kFlatness<S> * qr_sq * pq_sq && nn > S(0);
+  }
+  n = pq.cross(Vec3T<S>(-rp));  // apex p
+  nn = n.squaredNorm();
+  return nn > kFlatness<S> * pq_sq * rp_sq && nn > S(0);
+}
+
 template <class S>
 [[gnu::always_inline]] inline SubSimplex<S> closest_on_vertex(const Vec3T<S>* w, int i) {
   SubSimplex<S> r;
@@ -84,19 +111,19 @@ bool same_sign_or_zero(S x, S reference) {
 template <class S>
 [[gnu::always_inline]] inline SubSimplex<S> closest_on_triangle(const Vec3T<S>* w, int i, int j,
                                                                 int k) {
-  const Vec3T<S> e1 = w[j] - w[i];
-  const Vec3T<S> e2 = w[k] - w[i];
-  const Vec3T<S> n = e1.cross(e2);
-  const S nn = n.squaredNorm();
+  Vec3T<S> n;
+  S nn;
+  const bool flat = !triangle_cross(w[i], w[j], w[k], n, nn);
   SubSimplex<S> best;
-  if (!(nn > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm())) {
+  if (flat) {
     keep_closer(best, closest_on_segment(w, i, j));
     keep_closer(best, closest_on_segment(w, j, k));
     keep_closer(best, closest_on_segment(w, k, i));
     return best;
   }
   // Projection of the origin onto the plane: exact up to rounding of the plane's offset.
-  const Vec3T<S> p = n * (w[i].dot(n) / nn);
+  const S offset = w[i].dot(n);
+  const Vec3T<S> p = n * (offset / nn);
   // Signed areas in the coordinate plane where the triangle's projection is largest; (x, y, z)
   // taken cyclically so the areas carry the sign of n[axis].
   int axis = 0;
@@ -124,15 +151,18 @@ template <class S>
       // and the convex combination q, which is a point of A - B by construction. On a sliver
       // triangle the plane can be off by far more than rounding, and p may then lie nearer the
       // origin than any point of A - B; GJK needs |v| to stay an upper bound on the distance or
-      // it stops early, too small. So take p only where it agrees with q to rounding.
+      // it stops early, too small. So take p where q lies in p's plane to rounding. Not where
+      // |q| = |p| to rounding: on a long thin triangle (a box 2e5 long against a segment) the
+      // weights' rounding slides q along the plane by 1e-5, which tilts q by 4e-5 rad while
+      // changing |q| at second order only; searching along that q found a vertex already in the
+      // simplex, and GJK stopped 0.17 short of the closest face.
       const Vec3T<S> q = best.weights[i] * w[i] + best.weights[j] * w[j] + best.weights[k] * w[k];
       const S scale = std::max(
           {w[i].cwiseAbs().maxCoeff(), w[j].cwiseAbs().maxCoeff(), w[k].cwiseAbs().maxCoeff()});
-      // ||q| - |p|| <= 16 eps scale, squared and multiplied through by (|q| + |p|)^2 ~ 4 max:
-      // no square root on this hot path.
-      const S qq = q.squaredNorm(), pp = p.squaredNorm(), diff = qq - pp;
+      // |(q - p).n| <= 32 eps scale |n|, squared: no square root on this hot path.
+      const S off_plane = q.dot(n) - offset;
       const S bound = S(32) * std::numeric_limits<S>::epsilon() * scale;
-      const bool p_agrees = diff * diff <= bound * bound * std::max(qq, pp);
+      const bool p_agrees = off_plane * off_plane <= bound * bound * nn;
       best.v = p_agrees ? p : q;
       best.mask = (1u << i) | (1u << j) | (1u << k);
       best.dist_sq = best.v.squaredNorm();
