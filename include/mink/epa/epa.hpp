@@ -497,8 +497,10 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     if (ws.vertices.size() == 2) {
       // A segment: the support point farthest from its line, along four orthogonal directions.
       const Vec3T<S> e = ws.vertices[1].w - ws.vertices[0].w;
-      const Vec3T<S> u1 = orthogonal(e).normalized();
-      const Vec3T<S> u2 = e.cross(u1).normalized();
+      // unit_of(), not normalized(): a segment of 1e-158 has a subnormal square, and its
+      // normalised directions came out 7e-9 off unit.
+      const Vec3T<S> u1 = unit_of(Vec3T<S>(orthogonal(e)));
+      const Vec3T<S> u2 = unit_of(Vec3T<S>(e.cross(u1)));
       SimplexVertexT<S> best_vertex;
       S best = S(-1);
       for (const Vec3T<S>& d : {u1, Vec3T<S>(-u1), u2, Vec3T<S>(-u2)}) {
@@ -531,7 +533,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
           continue;
         }
         const Vec3T<S> e = ws.vertices[1].w - ws.vertices[0].w;
-        return degenerate(Vec3T<S>(orthogonal(e).normalized()));
+        return degenerate(unit_of(Vec3T<S>(orthogonal(e))));
       }
       const SimplexVertexT<S> up = support(n);
       const SimplexVertexT<S> down = support(-n);
