@@ -1,8 +1,9 @@
 // A main() for the fuzz targets where libFuzzer is not available (GCC, the CI build): runs the
 // target on every file given on the command line (a corpus, or one crash to reproduce), then on
-// `--random N` inputs of random bytes from a fixed seed, so that CTest exercises the target and
-// its checks under the sanitizers on every build. An input that aborts is written to
-// fuzz-failure.bin in the working directory first, to be replayed with the same binary.
+// `--random N` inputs of random bytes from a fixed seed (`--seed S` to explore others), so that
+// CTest exercises the target and its checks under the sanitizers on every build. An input that
+// aborts is written to fuzz-failure.bin in the working directory first, to be replayed with the
+// same binary.
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -43,10 +44,15 @@ extern "C" void on_abort(int signal) {
 int main(int argc, char** argv) {
   std::signal(SIGABRT, on_abort);
   long random_inputs = 0;
+  std::uint64_t seed = 20261126;
   int files = 0;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--random") == 0 && i + 1 < argc) {
       random_inputs = std::strtol(argv[++i], nullptr, 10);
+      continue;
+    }
+    if (std::strcmp(argv[i], "--seed") == 0 && i + 1 < argc) {
+      seed = std::strtoull(argv[++i], nullptr, 10);
       continue;
     }
     std::ifstream in(argv[i], std::ios::binary);
@@ -59,7 +65,7 @@ int main(int argc, char** argv) {
     run_one(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
     ++files;
   }
-  std::mt19937_64 rng(20261126);
+  std::mt19937_64 rng(seed);
   std::vector<std::uint8_t> bytes;
   for (long n = 0; n < random_inputs; ++n) {
     bytes.resize(rng() % 512);

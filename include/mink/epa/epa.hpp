@@ -54,8 +54,10 @@ struct EpaFace {
   bool live;
 
   /// Signed distance of the origin below the face's plane (> 0: the origin is inside).
-  S distance() const { return offset / std::sqrt(nn); }
-  Vec3T<S> unit_normal() const { return n / std::sqrt(nn); }
+  /// length_of() and unit_of(): on shapes of 1e-80, nn is a product of four such coordinates,
+  /// subnormal, and its plain root left the normal 5e-8 off unit.
+  S distance() const { return offset / length_of(n, nn); }
+  Vec3T<S> unit_normal() const { return unit_of(n, nn, length_of(n, nn)); }
 };
 
 /// Scratch memory of one EPA run, kept per thread so that queries do not allocate once warm.
@@ -135,7 +137,7 @@ template <class S>
 bool triangle_normal(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Vec3T<S>& n) {
   S nn;
   if (!triangle_cross(p, q, r, n, nn)) return false;
-  n /= std::sqrt(nn);
+  n = unit_of(n, nn, length_of(n, nn));
   return true;
 }
 
@@ -563,10 +565,10 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   auto step = [&](int f) {
     const EpaFace<S>& face = ws.faces[f];
     const SimplexVertexT<S> w = support(face.n);
-    const S length = std::sqrt(face.nn);
+    const S length = length_of(face.n, face.nn);
     const S h = face.n.dot(w.w) / length;
     if (!(std::abs(h) <= std::numeric_limits<S>::max())) return Step::Overflow;
-    least.offer(h, face.n / length, w);
+    least.offer(h, unit_of(face.n, face.nn, length), w);
     if (h - face.offset / length <= gain_tol) return Step::Closed;
     // w is a vertex of the face: h is its distance, to rounding.
     for (int k = 0; k < 3; ++k)
@@ -628,7 +630,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     for (int g = 0; g < static_cast<int>(ws.faces.size()); ++g) {
       if (g == best || !ws.faces[g].live) continue;
       // Coplanar: the same normal, and a plane through p (within EPA's tolerance).
-      const S length = std::sqrt(ws.faces[g].nn);
+      const S length = length_of(ws.faces[g].n, ws.faces[g].nn);
       if (ws.faces[g].n.dot(normal) < kCoplanar * length ||
           std::abs(ws.faces[g].n.dot(p) - ws.faces[g].offset) > (gain_tol + flat_tol) * length)
         continue;

@@ -110,6 +110,11 @@ template <class S>
   }
 }
 
+/// Squared half lengths below this (2^-511, about 1e-154 in double) are solved rescaled: their
+/// products lose digits or underflow.
+template <class S>
+inline constexpr S kTinySegmentSq = power_of_two<S>(std::numeric_limits<S>::min_exponent / 2);
+
 /// segment_parameters() on the pair scaled to its largest coordinate, for segments whose squared
 /// lengths underflow (see closest_points_of_segments()); out of line, as it is rare.
 template <class S>
@@ -119,7 +124,13 @@ template <class S>
   const S largest =
       std::max({hp.cwiseAbs().maxCoeff(), hq.cwiseAbs().maxCoeff(), w.cwiseAbs().maxCoeff()});
   const Vec3T<S> sp = hp / largest, sq = hq / largest;
-  segment_parameters(sp, sq, Vec3T<S>(w / largest), sp.squaredNorm(), sq.squaredNorm(), u, v);
+  // A segment still shorter than 1e-77 of the largest coordinate is a point at this scale. Kept
+  // as a segment, its square times the other's underflowed to 0 and Cramer's rule gave 0 / 0 (a
+  // segment of 5e-158 some 2e4 from one 2e3 long).
+  S a = sp.squaredNorm(), e = sq.squaredNorm();
+  if (a < kTinySegmentSq<S>) a = S(0);
+  if (e < kTinySegmentSq<S>) e = S(0);
+  segment_parameters(sp, sq, Vec3T<S>(w / largest), a, e, u, v);
 }
 
 /// Closest points of the core segments p and q (either may be a point): on return
@@ -142,10 +153,10 @@ template <class S>
   const Vec3T<S>&hp = p.half, &hq = q.half;
   const Vec3T<S> w = q.centre - p.centre;
   S u = S(0), v = S(0);
-  // Segments shorter than 1e-77 (in double): their squared lengths and the products of those lose
-  // digits or underflow, and a segment of 1e-170 would count as a point. u and v do not change
-  // with the scale, so such a pair is solved rescaled.
-  constexpr S kTinySq = power_of_two<S>(std::numeric_limits<S>::min_exponent / 2);
+  // Segments shorter than 1e-77 (in double, kTinySegmentSq): their squared lengths and the
+  // products of those lose digits or underflow, and a segment of 1e-170 would count as a point.
+  // u and v do not change with the scale, so such a pair is solved rescaled.
+  constexpr S kTinySq = kTinySegmentSq<S>;
   const S a = hp.squaredNorm(), e = hq.squaredNorm();
   if ((a < kTinySq && hp != Vec3T<S>::Zero()) || (e < kTinySq && hq != Vec3T<S>::Zero()))
       [[unlikely]]
@@ -166,11 +177,17 @@ template <class S>
 /// eps L / |gap| along the segment, and every radian of tilt costs half the segment's length of
 /// depth along the normal (1e-4 of the size for cores 1e-12 apart). Tilts within the plane
 /// orthogonal to the segments are harmless: all those directions give the same depth to within
-/// |gap|.
+/// |gap|. `terms_sq` is the sum of the squared centres and half vectors: a segment no longer than
+/// their rounding has no direction to speak of (its parameter is noise, and one of 1e-161 beside
+/// one of 1e11 is solved as a point, v = 0, which made the gap orthogonal to it, 90 degrees off),
+/// and a tilt along it costs less than that rounding.
 template <class S>
 Vec3T<S> segment_gap_direction(const CoreSegment<S>& p, const CoreSegment<S>& q, S u, S v,
-                               const Vec3T<S>& gap) {
-  const bool across_p = std::abs(u) < S(1), across_q = std::abs(v) < S(1);
+                               const Vec3T<S>& gap, S terms_sq) {
+  constexpr S kEps = std::numeric_limits<S>::epsilon();
+  const S floor_sq = kEps * kEps * terms_sq;
+  const bool across_p = std::abs(u) < S(1) && p.half.squaredNorm() > floor_sq;
+  const bool across_q = std::abs(v) < S(1) && q.half.squaredNorm() > floor_sq;
   Vec3T<S> n = gap;
   if (!make_orthogonal(n, across_p ? p.half : Vec3T<S>::Zero(),
                        across_q ? q.half : Vec3T<S>::Zero()))
@@ -219,7 +236,7 @@ typename A::Scalar closest_core_points(const A& a, const PoseT<typename A::Scala
     if (gap_sq >= S(1e-6) * terms_sq)
       *unit = plain ? Vec3T<S>(gap * (S(1) / length)) : unit_of(gap, gap_sq, length);
     else
-      *unit = segment_gap_direction(p, q, u, v, gap);
+      *unit = segment_gap_direction(p, q, u, v, gap, terms_sq);
   }
   return length;
 }

@@ -268,9 +268,10 @@ void support_feature(const CylinderT<S>& cylinder, const Vec3T<S>& d, S toleranc
     detail::rim_feature(r, detail::sign_nonneg(d.z()) * h, d.z(), out);
     return;
   }
-  if (S(2) * h * std::abs(d.z()) <= tolerance * length) {
-    const S k = r / rho;
-    out.set_edge({k * d.x(), k * d.y(), -h}, {k * d.x(), k * d.y(), h});
+  S ux, uy;  // planar_unit(), not r / rho: rho of 1e-318 made that infinite
+  if (S(2) * h * std::abs(d.z()) <= tolerance * length &&
+      detail::planar_unit(d.x(), d.y(), ux, uy)) {
+    out.set_edge({r * ux, r * uy, -h}, {r * ux, r * uy, h});
     return;
   }
   out.set_point(cylinder.support_core(d));
@@ -286,11 +287,17 @@ void support_feature(const ConeT<S>& cone, const Vec3T<S>& d, S tolerance,
     detail::rim_feature(r, -h, S(-1), out);
     return;
   }
+  // A cone flat to the tolerance (apex and whole rim within it along d) shows its disk from above
+  // too: the rim describes that contact, where a side line would give 2 points of a disk.
+  if (S(2) * (r * rho + h * d.z()) <= tolerance * length) {
+    detail::rim_feature(r, -h, S(1), out);
+    return;
+  }
   // Apex and rim point at the same height: the side line between them.
   const S apex = h * d.z(), rim = r * rho - h * d.z();
-  if (rho > S(0) && std::abs(apex - rim) <= tolerance * length) {
-    const S k = r / rho;
-    out.set_edge({S(0), S(0), h}, {k * d.x(), k * d.y(), -h});
+  S ux, uy;  // planar_unit(), not r / rho: rho of 1e-318 made that infinite
+  if (std::abs(apex - rim) <= tolerance * length && detail::planar_unit(d.x(), d.y(), ux, uy)) {
+    out.set_edge({S(0), S(0), h}, {r * ux, r * uy, -h});
     return;
   }
   out.set_point(cone.support_core(d));

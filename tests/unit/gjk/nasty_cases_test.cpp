@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -397,6 +398,51 @@ TEST(GjkNasty, TinyAndSubnormalGapsGiveUnitNormals) {
       if (std::abs(beyond.y()) <= h && std::abs(beyond.z()) <= h)
         expect_tiny_gap(tiny_box, dot, beyond, Vec3(h, beyond.y(), beyond.z()));
       expect_tiny_gap(tiny_capsule, dot, beyond, Vec3(0, 0, std::clamp(beyond.z(), -h, h)));
+    }
+  }
+}
+
+TEST(GjkNasty, TinySegmentBesideAHugeOneKeepsItsNormal) {
+  // Found by fuzzing: a segment of 1e-160 some 1.5e5 past the end of a segment 1.4e11 long. Solved
+  // rescaled, the tiny one was a point at its centre, and its "interior" parameter made the normal
+  // orthogonal to it: 90 degrees off. The closest point is the long segment's end, worked out
+  // here: P lies beyond it (P - end has a negative component along the segment).
+  oracle::Rng rng(381000);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 u = rng.unit();
+    const Vec3 end = rng.in_ball(1e6);
+    const double length = rng.log_uniform(1e3, 1e12);
+    const Vec3 v = rng.unit();
+    const Vec3 off = (v - v.dot(u) * u).normalized();
+    const double gap = rng.log_uniform(1, 1e6);
+    const Vec3 p = end + gap * off - rng.uniform(0, 0.1) * gap * u;
+    // Squares from subnormal (the found case: 4e-161) to just below the rescaling threshold.
+    const double tiny = rng.log_uniform(1e-165, 1e-150);
+    // The tiny segment along the gap (the worst case: orthogonal to it is 90 degrees off) or
+    // along a random direction.
+    const Vec3 along = k % 2 ? Vec3((p - end).normalized()) : rng.unit();
+    const auto long_segment = mink::Shape::segment(end, end + length * u).value();
+    const auto small = mink::Shape::segment(-tiny * along, tiny * along).value();
+    const auto rounded = mink::Shape::rounded(small, 1e-300).value();
+    const Vec3 normal = (p - end).normalized();
+    const double distance = (p - end).norm();
+    // Placed by its pose: a segment of 1e-160 needs coordinates near 0 to have any length.
+    const Pose at_p = Pose::from_translation(p);
+    // The long segment's end is rebuilt from its centre and half vector: rounding of a few eps
+    // of its length (1e-4 at 1e12), which bounds the distance's error and tilts the normal by
+    // that over the gap.
+    const double tol =
+        1e-12 * distance + 8 * std::numeric_limits<double>::epsilon() * (end.norm() + length);
+    for (const mink::Shape* b : {&small, &rounded}) {
+      for (const bool swapped : {false, true}) {
+        const auto r = swapped
+                           ? mink::distance(*b, at_p, long_segment, Pose::identity())
+                           : mink::distance(long_segment, Pose::identity(), *b, at_p);
+        ASSERT_EQ(r.status, mink::Status::Separated) << oracle::seed_note(381000) << " case " << k;
+        EXPECT_NEAR(r.distance, distance, tol) << "case " << k;
+        EXPECT_LE((r.normal - (swapped ? -normal : normal)).norm(), 1e-12 + tol / distance)
+            << "case " << k << ": " << r.normal.transpose();
+      }
     }
   }
 }

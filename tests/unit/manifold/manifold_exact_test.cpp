@@ -195,6 +195,55 @@ TEST(ManifoldExact, CylinderStandingOnBoxGivesRimPoints) {
   }
 }
 
+TEST(ManifoldExact, FlatConeApexDownOnBoxGivesRimPoints) {
+  // A cone of height 1e-15 of its radius is a disk: lying apex down on the table, its rim
+  // describes the contact, as for a cylinder (a side line would give 2 points of a disk).
+  for (int k = 0; k < 100; ++k) {
+    Rng rng(603500 + k);
+    const Scene scene = random_scene(rng);
+    const mink::Box table{{4, 4, 0.5}};
+    const double radius = rng.uniform(0.1, 1);
+    const mink::Cone cone{radius, 1e-15 * radius};
+    const double overlap = rng.log_uniform(1e-6, 0.02);
+    const Vec3 centre(rng.uniform(-1, 1), rng.uniform(-1, 1), 0.5 - overlap);
+    const Pose pt = scene.place(Vec3::Zero(), Quat::Identity());
+    // Apex down: half a turn about x, then a spin about the table's normal.
+    const Quat flip = about_z(rng.uniform(0, 7)) * Quat(0, 1, 0, 0);
+    const Pose pb = scene.place(centre, flip);
+    const ManifoldResult r = mink::manifold(table, pt, cone, pb);
+    ASSERT_EQ(r.status, mink::Status::Intersecting) << oracle::seed_note(603500 + k);
+    ASSERT_EQ(r.count, 4) << oracle::seed_note(603500 + k);
+    const Vec3 disk_centre = scene.frame.apply(centre);
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 offset = r.points[i].point_b - disk_centre;
+      EXPECT_NEAR(offset.dot(scene.up()), 0, 1e-9);
+      EXPECT_NEAR(offset.norm(), radius, 1e-9);
+      EXPECT_NEAR(r.points[i].depth, overlap, 1e-9);
+    }
+  }
+}
+
+TEST(ManifoldExact, FlatConeTurnedBySubnormalAnglesHasFinitePoints) {
+  // Found by fuzzing: a flat cone under a rotation whose off-diagonal entries are 7e-319 (a
+  // valid rotation to rounding). The direction's planar part was subnormal, and its side line
+  // ended at an infinite rim point.
+  const mink::Box slab{{14420.5, 5503, 0.0085444450378417969}};
+  const mink::Cone cone{1, 2.7755575615628914e-17};
+  Pose pa = Pose::from_translation(Vec3(1, 1, 0));
+  const double tiny = 6.9942897219161908e-319;
+  pa.rotation << -1, -tiny, -tiny, -tiny, 1, -tiny, tiny, -tiny, -1;
+  const Pose pb = Pose::from_translation(Vec3(-3.8224970921874046e-07, 0, 0));
+  const ManifoldResult r = mink::manifold(slab, pa, cone, pb);
+  ASSERT_EQ(r.status, mink::Status::Intersecting);
+  ASSERT_EQ(r.count, 4);  // the disk's rim, as above
+  for (int i = 0; i < r.count; ++i) {
+    EXPECT_TRUE(r.points[i].point_a.allFinite() && r.points[i].point_b.allFinite());
+    // The disk lies in the slab's middle plane: every point is as deep as the half thickness.
+    EXPECT_NEAR(r.points[i].depth, 0.0085444450378417969, 1e-12);
+    EXPECT_NEAR((r.points[i].point_b - pb.translation).norm(), 1, 1e-9);
+  }
+}
+
 /// A pyramid's base face resting on a box face, with the pyramid given as `Hull` (a Polytope,
 /// whose faces the manifold finds by scanning, or a ConvexHullShape, whose edge graph it walks).
 template <class Hull>
