@@ -222,9 +222,10 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   // enclose the origin), EPA decides.
   if (gjk.upper > touch && gjk.lower > touch) return cores_apart();
   // The cores meet (or may): EPA on the cores, then add the radii.
-  const S centres = diff.translation.norm();
+  // unit_of(): two spheres' centres 5e-159 apart have a subnormal square, and the plain quotient
+  // was 2e-8 off unit.
   const Vec3T<S> fallback =
-      centres > S(0) ? Vec3T<S>(diff.translation / centres) : Vec3T<S>::UnitZ();
+      diff.translation != Vec3T<S>::Zero() ? detail::unit_of(diff.translation) : Vec3T<S>::UnitZ();
   const auto epa = detail::run_epa(diff, gjk.simplex, size, tolerances, fallback);
   result.iterations += epa.iterations;
   if (epa.status == Status::InvalidInput) {

@@ -49,24 +49,29 @@ constexpr S kFlatness =
 /// longest edge), in cyclic order: a cross product is good to eps |e1| |e2|, so from the two long
 /// edges of a triangle 2e5 long and 2 wide the normal was off by 3e-11 rad, which moved the plane
 /// by 6e-6 at the origin 2e5 away (GJK then searched past the closest face); from the short edge
-/// and a long one it is good to eps.
+/// and a long one it is good to eps. `apex` (optional) receives the apex: 0 for p, 1 for q, 2 for
+/// r.
 template <class S>
 [[gnu::always_inline]] inline bool triangle_cross(const Vec3T<S>& p, const Vec3T<S>& q,
-                                                  const Vec3T<S>& r, Vec3T<S>& n, S& nn) {
+                                                  const Vec3T<S>& r, Vec3T<S>& n, S& nn,
+                                                  int* apex = nullptr) {
   const Vec3T<S> pq = q - p, qr = r - q, rp = p - r;
   const S pq_sq = pq.squaredNorm(), qr_sq = qr.squaredNorm(), rp_sq = rp.squaredNorm();
   if (pq_sq > qr_sq && pq_sq >= rp_sq) {  // apex r: (p - r) x (q - r)
     n = rp.cross(Vec3T<S>(-qr));
     nn = n.squaredNorm();
+    if (apex) *apex = 2;
     return nn > kFlatness<S> * rp_sq * qr_sq && nn > S(0);
   }
   if (rp_sq > qr_sq && rp_sq > pq_sq) {  // apex q: (r - q) x (p - q)
     n = qr.cross(Vec3T<S>(-pq));
     nn = n.squaredNorm();
+    if (apex) *apex = 1;
     return nn > kFlatness<S> * qr_sq * pq_sq && nn > S(0);
   }
   n = pq.cross(Vec3T<S>(-rp));  // apex p
   nn = n.squaredNorm();
+  if (apex) *apex = 0;
   return nn > kFlatness<S> * pq_sq * rp_sq && nn > S(0);
 }
 
@@ -113,7 +118,8 @@ template <class S>
                                                                 int k) {
   Vec3T<S> n;
   S nn;
-  const bool flat = !triangle_cross(w[i], w[j], w[k], n, nn);
+  int apex;
+  const bool flat = !triangle_cross(w[i], w[j], w[k], n, nn, &apex);
   SubSimplex<S> best;
   if (flat) {
     keep_closer(best, closest_on_segment(w, i, j));
@@ -130,13 +136,28 @@ template <class S>
   if (std::abs(n.y()) > std::abs(n[axis])) axis = 1;
   if (std::abs(n.z()) > std::abs(n[axis])) axis = 2;
   const int x = (axis + 1) % 3, y = (axis + 2) % 3;
-  auto area = [x, y](const Vec3T<S>& a, const Vec3T<S>& b, const Vec3T<S>& c) {
-    return (b[x] - a[x]) * (c[y] - a[y]) - (b[y] - a[y]) * (c[x] - a[x]);
+  // Barycentric areas from the apex (a, b, c in cyclic order, a at the largest angle): the
+  // sub-area of b (b replaced by p) and of c each from an edge at the apex, the two shorter
+  // edges; a's as the rest of the whole area n[axis], which triangle_cross() took from those same
+  // edges. Each sub-area of a sliver taken from its longest edge, and their sum as the whole,
+  // carried an error of eps |w| times that edge: on a triangle 7e16 long and 4e5 wide (a needle
+  // box against a segment) the weights were off by 2e-5, and the witness point on the segment by
+  // 1e11. From the apex, only the split between the two near vertices is that uncertain.
+  const int a = apex == 0 ? i : (apex == 1 ? j : k);
+  const int b = apex == 0 ? j : (apex == 1 ? k : i);
+  const int c = apex == 0 ? k : (apex == 1 ? i : j);
+  // (u - p) x (v - u) in the coordinate plane: the area of (p, u, v).
+  auto area_from = [x, y, &p](const Vec3T<S>& u, const Vec3T<S>& v) {
+    return (u[x] - p[x]) * (v[y] - u[y]) - (u[y] - p[y]) * (v[x] - u[x]);
   };
-  const S ci = area(p, w[j], w[k]);
-  const S cj = area(w[i], p, w[k]);
-  const S ck = area(w[i], w[j], p);
-  const S ref = n[axis];
+  const S whole = n[axis];
+  const S area_b = area_from(w[c], w[a]);
+  const S area_c = area_from(w[a], w[b]);
+  const S area_a = whole - area_b - area_c;
+  const S ci = apex == 0 ? area_a : (apex == 1 ? area_c : area_b);
+  const S cj = apex == 0 ? area_b : (apex == 1 ? area_a : area_c);
+  const S ck = apex == 0 ? area_c : (apex == 1 ? area_b : area_a);
+  const S ref = whole;
   const bool in_i = same_sign_or_zero(ci, ref);
   const bool in_j = same_sign_or_zero(cj, ref);
   const bool in_k = same_sign_or_zero(ck, ref);

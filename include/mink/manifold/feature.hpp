@@ -128,8 +128,7 @@ void feature_from_points(Vec3T<S>* points, int count, const Vec3T<S>& n, Support
     const Vec3T<S>& b = out.points[(j + 1) % kept];
     normal += (a - out.points[0]).cross(b - out.points[0]);
   }
-  const S length = normal.norm();
-  out.normal = length > S(0) && normal.dot(n) > S(0) ? Vec3T<S>(normal / length) : n;
+  out.normal = normal != Vec3T<S>::Zero() && normal.dot(n) > S(0) ? unit_of(normal) : n;
 }
 
 /// A cap of `kMaxFeaturePoints` points on the circle of `radius` at height z, counter-clockwise
@@ -169,7 +168,10 @@ namespace detail {
 /// The shape of a box's support feature along d: the axes it extends along (an axis is free when
 /// flipping its coordinate changes the height d . p by at most `limit`; unit: length, times |d|)
 /// and, for a face, the axis of its normal: the fixed axis, or for a box small against the
-/// tolerance (all free) the axis most aligned with d.
+/// tolerance (all free) the axis most aligned with d. An axis of zero extent is never free: the
+/// long edge of a box flat in z would otherwise be a "face" of width 0 whose normal (x or y) is
+/// far from d, and a rounded box's witness point was pushed out along it (by the radius, 90
+/// degrees off the contact normal).
 struct BoxFeatureAxes {
   bool free[3];
   int free_count;  ///< 0 a vertex, 1 an edge, 2 or 3 a face
@@ -180,7 +182,7 @@ template <class S>
 [[gnu::always_inline]] inline BoxFeatureAxes box_feature_axes(const Vec3T<S>& h, const Vec3T<S>& d,
                                                               S limit) {
   BoxFeatureAxes f;
-  for (int i = 0; i < 3; ++i) f.free[i] = S(2) * h[i] * std::abs(d[i]) <= limit;
+  for (int i = 0; i < 3; ++i) f.free[i] = h[i] > S(0) && S(2) * h[i] * std::abs(d[i]) <= limit;
   f.free_count = f.free[0] + f.free[1] + f.free[2];
   f.face_axis = f.free_count == 3   ? dominant_axis(d)
                 : f.free_count == 2 ? (!f.free[0] ? 0 : (!f.free[1] ? 1 : 2))
@@ -306,8 +308,7 @@ void support_feature(const ConeT<S>& cone, const Vec3T<S>& d, S tolerance,
 template <class S>
 void support_feature(const TriangleT<S>& triangle, const Vec3T<S>& d, S tolerance,
                      SupportFeatureT<S>& out) {
-  const S length = d.norm();
-  const Vec3T<S> n = d / length;
+  const Vec3T<S> n = detail::unit_of(d);
   Vec3T<S> corners[3] = {triangle.a, triangle.b, triangle.c};
   const S top = std::max({corners[0].dot(n), corners[1].dot(n), corners[2].dot(n)});
   Vec3T<S> near[3];

@@ -742,6 +742,81 @@ TEST(ContactNasty, DiskSunkIntoABoxUpTo1e8Long) {
   }
 }
 
+TEST(ContactNasty, SpheresWithSubnormalCentreGap) {
+  // Found by fuzzing: spheres of 283 and 1 whose centres are 5e-159 apart. The square of that is
+  // subnormal, and EPA's fallback normal (the line of centres over its plain length) came out
+  // 2e-8 off unit.
+  const mink::Sphere a{283.0625}, b{1};
+  for (const double gap : {5.3342320987783821e-159, 1e-160, 3e-300, 4.9406564584124654e-324}) {
+    for (const Vec3& along : {Vec3(1, 0, 0), Vec3(0.6, 0, -0.8), Vec3(1, 1, 1)}) {
+      const Vec3 offset = gap * along;
+      if (offset == Vec3::Zero()) continue;
+      SCOPED_TRACE(testing::Message() << "gap " << gap << " along " << along.transpose());
+      // A at the offset, B at the origin: B must move away from A, along -along (or any unit
+      // vector, when the offset is below the touching tolerance: either way a unit one).
+      expect_depth(a, Pose::from_translation(offset), b, Pose::identity(), 284.0625, 1e-12);
+    }
+  }
+}
+
+TEST(ContactNasty, NeedleBoxTouchingAHugeSegment) {
+  // Found by fuzzing: a box 3.8e5 long and 1e-3 thick, 1.6e4 from a segment 7.2e16 long. That is
+  // touching within the tolerance (1e-12 of the size), but the witness point on the segment was
+  // 1.1e11 from the crossing: the weights of GJK's sliver triangle (7e16 by 4e5) were normalised
+  // by a sum of sub-areas each taken along the long edge, 2e-5 off. The points are now those of
+  // the closest approach, worked out here: the segment's line at its nearest to the box's axis.
+  const Box needle{Vec3(0.00058206915855407715, 9.647756814956665e-05, 191504)};
+  const double half = 36028797018963968;
+  const mink::Segment segment{Vec3(0, 0, -half), Vec3(0, 0, half)};
+  const Pose pa = at(-15989.5, -1, 0);
+  Pose pb = at(0.5, 199.3828125, 0);
+  pb.rotation << -0.99794948430807406, -0.056730632641185566, -0.029638861134986743,
+      0.056730632641185566, -0.56953916155939943, -0.8200041333861352, 0.029638861134986743,
+      -0.8200041333861352, 0.57158967725132537;
+  // The segment's line, nearest to the box's axis (x, y) = (-15989.5, -1) in the xy plane: the
+  // box is far thinner than the gap, so this is the closest approach to it within 1e-3.
+  const Vec3 d = pb.rotation.col(2);
+  const Vec3 o = pb.translation;
+  const double s =
+      ((-15989.5 - o.x()) * d.x() + (-1 - o.y()) * d.y()) / (d.x() * d.x() + d.y() * d.y());
+  const Vec3 on_segment = o + s * d;
+  const double size = needle.bounding_radius() + segment.bounding_radius();
+  for (const bool swap : {false, true}) {
+    const auto r =
+        swap ? mink::contact(segment, pb, needle, pa) : mink::contact(needle, pa, segment, pb);
+    SCOPED_TRACE(testing::Message() << "swap " << swap << ": " << oracle::describe(r));
+    EXPECT_EQ(r.status, mink::Status::Intersecting);
+    EXPECT_TRUE(oracle::all_finite(r));
+    const Vec3& got = swap ? r.point_a : r.point_b;
+    // The answer's own tolerance is 1e-12 of the size (3.6e4); the points must agree with the
+    // crossing to far better than the 1e-9 of the size the answers are graded at.
+    EXPECT_LE((got - on_segment).norm(), 1e-12 * size);
+    EXPECT_LE((r.point_b - r.point_a + r.depth * r.normal).norm(), 1e-12 * size);
+  }
+}
+
+TEST(ContactNasty, RoundedFlatBoxEdgeIntoAPlate) {
+  // Found by fuzzing: a rounded box whose core is a rectangle (half extents 1, 79604, 0; radius 1)
+  // crossed by a flat plate, slightly tilted. The least overlap is along the plate's normal n,
+  // where the rectangle's support is its long edge: the witness on A is that edge pushed out by
+  // the radius along n. The zero-width axis made the edge a "face" whose normal was 88 degrees
+  // off n, and the point was pushed along that instead.
+  const auto a = mink::Rounded<Box>{Box{Vec3(1, 79604, 0)}, 1};
+  const Box plate{Vec3(0, 1, 60.7890625)};
+  Pose pa = at(3.197509765625, -0.00080108642578125, 0);
+  pa.rotation << 0, 1, 0, 0, 0, 1, 1, 0, 0;
+  const Pose pb = rotated(Vec3(0.132415771484375, 0, 1.98052978515625), 0.032855472, Vec3(1, 0, 0));
+  const Vec3 n = pb.rotation.col(1);  // the plate's normal; B moves along it to separate
+  // Depth: A's support along n (the rectangle's edge z = 1 and the radius), plus the plate's half
+  // width 1, minus the centres' gap along n.
+  const double support_a = 1 * std::abs(n.z()) + 1;
+  const double depth = support_a + 1 - (pb.translation - pa.translation).dot(n);
+  const auto r = expect_depth(a, pa, plate, pb, depth, 1e-12, n);
+  // point_a is on A's edge x_local = 1 (world z = 1), pushed by the radius along n.
+  EXPECT_NEAR((r.point_a - n - pa.translation).z(), 1, 1e-12);
+  EXPECT_NEAR((r.point_a - n - pa.translation).y(), 0, 1e-12);
+}
+
 TEST(ContactNasty, BadInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
