@@ -15,7 +15,8 @@
 /// vertex ordering (any simplex, including one rebuilt from a warm-start cache, is handled);
 /// near-flat triangles and tetrahedra (relative size below kFlatness) are treated as their
 /// boundary; barycentrics are normalised by the sum of the computed sub-volumes so they always
-/// lie in [0, 1] and sum to 1.
+/// lie in [0, 1] and sum to 1; a triangle's sub-areas come from the edges at its largest angle,
+/// the third as the rest of the whole, so that a sliver's weights along its length stay exact.
 #pragma once
 
 #include <algorithm>

@@ -28,8 +28,10 @@ void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
   out.count = 0;
   // Each box's feature direction in its own frame: A's along n, B's against it.
   const Vec3T<S> nb = rel.inverse_rotate(-n);
-  const BoxFeatureAxes fa = box_feature_axes(ha, n, feature_tolerance * a.bounding_radius());
-  const BoxFeatureAxes fb = box_feature_axes(hb, nb, feature_tolerance * b.bounding_radius());
+  const BoxFeatureAxes fa =
+      box_feature_axes(ha, n, feature_tolerance * a.bounding_radius(), a.core_radius());
+  const BoxFeatureAxes fb =
+      box_feature_axes(hb, nb, feature_tolerance * b.bounding_radius(), b.core_radius());
 
   // The reference face, as clip_features() picks it.
   bool ref_is_a;

@@ -171,7 +171,10 @@ namespace detail {
 /// tolerance (all free) the axis most aligned with d. An axis of zero extent is never free: the
 /// long edge of a box flat in z would otherwise be a "face" of width 0 whose normal (x or y) is
 /// far from d, and a rounded box's witness point was pushed out along it (by the radius, 90
-/// degrees off the contact normal).
+/// degrees off the contact normal). For the same reason a box rounded by `radius` keeps a face
+/// only while pushing along the face's normal instead of d costs at most the tolerance,
+/// radius (1 - cos t) <= limit / |d| for the tilt t: a core 3.6e-15 thick passes the flatness test
+/// at any tilt, and is then the edge along its least tilted free axis.
 struct BoxFeatureAxes {
   bool free[3];
   int free_count;  ///< 0 a vertex, 1 an edge, 2 or 3 a face
@@ -180,13 +183,26 @@ struct BoxFeatureAxes {
 
 template <class S>
 [[gnu::always_inline]] inline BoxFeatureAxes box_feature_axes(const Vec3T<S>& h, const Vec3T<S>& d,
-                                                              S limit) {
+                                                              S limit, S radius = S(0)) {
   BoxFeatureAxes f;
   for (int i = 0; i < 3; ++i) f.free[i] = h[i] > S(0) && S(2) * h[i] * std::abs(d[i]) <= limit;
-  f.free_count = f.free[0] + f.free[1] + f.free[2];
-  f.face_axis = f.free_count == 3   ? dominant_axis(d)
-                : f.free_count == 2 ? (!f.free[0] ? 0 : (!f.free[1] ? 1 : 2))
-                                    : -1;
+  auto classify = [&f, &d] {
+    f.free_count = f.free[0] + f.free[1] + f.free[2];
+    f.face_axis = f.free_count == 3   ? dominant_axis(d)
+                  : f.free_count == 2 ? (!f.free[0] ? 0 : (!f.free[1] ? 1 : 2))
+                                      : -1;
+  };
+  classify();
+  if (radius > S(0) && f.face_axis >= 0 && radius * (d.norm() - std::abs(d[f.face_axis])) > limit)
+      [[unlikely]] {
+    // The edge along the free axis least tilted against d.
+    int along = -1;
+    for (int i = 0; i < 3; ++i)
+      if (f.free[i] && i != f.face_axis && (along < 0 || std::abs(d[i]) < std::abs(d[along])))
+        along = i;
+    for (int i = 0; i < 3; ++i) f.free[i] = i == along;
+    classify();
+  }
   return f;
 }
 

@@ -796,25 +796,30 @@ TEST(ContactNasty, NeedleBoxTouchingAHugeSegment) {
 }
 
 TEST(ContactNasty, RoundedFlatBoxEdgeIntoAPlate) {
-  // Found by fuzzing: a rounded box whose core is a rectangle (half extents 1, 79604, 0; radius 1)
-  // crossed by a flat plate, slightly tilted. The least overlap is along the plate's normal n,
-  // where the rectangle's support is its long edge: the witness on A is that edge pushed out by
-  // the radius along n. The zero-width axis made the edge a "face" whose normal was 88 degrees
-  // off n, and the point was pushed along that instead.
-  const auto a = mink::Rounded<Box>{Box{Vec3(1, 79604, 0)}, 1};
-  const Box plate{Vec3(0, 1, 60.7890625)};
-  Pose pa = at(3.197509765625, -0.00080108642578125, 0);
-  pa.rotation << 0, 1, 0, 0, 0, 1, 1, 0, 0;
-  const Pose pb = rotated(Vec3(0.132415771484375, 0, 1.98052978515625), 0.032855472, Vec3(1, 0, 0));
-  const Vec3 n = pb.rotation.col(1);  // the plate's normal; B moves along it to separate
-  // Depth: A's support along n (the rectangle's edge z = 1 and the radius), plus the plate's half
-  // width 1, minus the centres' gap along n.
-  const double support_a = 1 * std::abs(n.z()) + 1;
-  const double depth = support_a + 1 - (pb.translation - pa.translation).dot(n);
-  const auto r = expect_depth(a, pa, plate, pb, depth, 1e-12, n);
-  // point_a is on A's edge x_local = 1 (world z = 1), pushed by the radius along n.
-  EXPECT_NEAR((r.point_a - n - pa.translation).z(), 1, 1e-12);
-  EXPECT_NEAR((r.point_a - n - pa.translation).y(), 0, 1e-12);
+  // Found by fuzzing: a rounded box whose core is a rectangle (half extents 1, 79604 and 0 or
+  // 3.6e-15; radius 1) crossed by a flat plate, slightly tilted. The least overlap is along the
+  // plate's normal n, where the rectangle's support is its long edge: the witness on A is that
+  // edge pushed out by the radius along n. The thin axis passed the flatness test at any tilt,
+  // which made the edge a "face" whose normal was 88 degrees off n, and the point was pushed
+  // along that normal instead.
+  for (const double thickness : {0.0, 3.5527136788005009e-15, 1e-9}) {
+    SCOPED_TRACE(testing::Message() << "thickness " << thickness);
+    const auto a = mink::Rounded<Box>{Box{Vec3(1, 79604, thickness)}, 1};
+    const Box plate{Vec3(0, 1, 60.7890625)};
+    Pose pa = at(3.197509765625, -0.00080108642578125, 0);
+    pa.rotation << 0, 1, 0, 0, 0, 1, 1, 0, 0;  // A's x, y, z along the world's z, x, y
+    const Pose pb =
+        rotated(Vec3(0.132415771484375, 0, 1.98052978515625), 0.032855472, Vec3(1, 0, 0));
+    const Vec3 n = pb.rotation.col(1);  // the plate's normal; B moves along it to separate
+    // Depth: A's support along n (the rectangle's edge: 1 along world z, the thickness along
+    // world y, and the radius), plus the plate's half width 1, minus the centres' gap along n.
+    const double support_a = std::abs(n.z()) + thickness * std::abs(n.y()) + 1;
+    const double depth = support_a + 1 - (pb.translation - pa.translation).dot(n);
+    const auto r = expect_depth(a, pa, plate, pb, depth, 1e-12, n);
+    // point_a is on A's edge (local x = 1, z = the thickness), pushed by the radius along n.
+    EXPECT_NEAR((r.point_a - n - pa.translation).z(), 1, 1e-12);
+    EXPECT_NEAR((r.point_a - n - pa.translation).y(), thickness, 1e-12);
+  }
 }
 
 TEST(ContactNasty, BadInput) {
