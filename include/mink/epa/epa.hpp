@@ -568,7 +568,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     const S length = length_of(face.n, face.nn);
     const S h = face.n.dot(w.w) / length;
     if (!(std::abs(h) <= std::numeric_limits<S>::max())) return Step::Overflow;
-    least.offer(h, unit_of(face.n, face.nn, length), w);
+    if (h < least.value) least.offer(h, unit_of(face.n, face.nn, length), w);
     if (h - face.offset / length <= gain_tol) return Step::Closed;
     // w is a vertex of the face: h is its distance, to rounding.
     for (int k = 0; k < 3; ++k)
