@@ -305,9 +305,9 @@ void support_feature(const ConeT<S>& cone, const Vec3T<S>& d, S tolerance,
     detail::rim_feature(r, -h, S(-1), out);
     return;
   }
-  // A cone flat to the tolerance (apex and whole rim within it along d) shows its disk from above
-  // too: the rim describes that contact, where a side line would give 2 points of a disk.
-  if (S(2) * (r * rho + h * d.z()) <= tolerance * length) {
+  // A cone flat to the tolerance (apex and whole rim within it along d, which looks up) shows its
+  // disk from above too: the rim describes that contact, where a side line would give 2 points.
+  if (d.z() >= S(0) && S(2) * (r * rho + h * d.z()) <= tolerance * length) {
     detail::rim_feature(r, -h, S(1), out);
     return;
   }

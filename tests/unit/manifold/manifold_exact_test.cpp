@@ -223,6 +223,46 @@ TEST(ManifoldExact, FlatConeApexDownOnBoxGivesRimPoints) {
   }
 }
 
+TEST(ManifoldExact, ConeFeaturesByHand) {
+  // support_feature() of a cone (radius 1, half height 1: apex (0, 0, 1), base z = -1) at a
+  // tolerance of 1e-3 per unit of |d|, against features worked out by hand.
+  const mink::Cone cone{1, 1};
+  mink::SupportFeatureT<double> f;
+  // Straight down: the base, its rim points at z = -1, normal -z.
+  mink::support_feature(cone, Vec3(0, 0, -2), 1e-3, f);
+  ASSERT_EQ(f.count, mink::kMaxFeaturePoints);
+  EXPECT_LE((f.normal - Vec3(0, 0, -1)).norm(), 1e-15);
+  for (int i = 0; i < f.count; ++i) {
+    EXPECT_NEAR(f.points[i].z(), -1, 1e-15);
+    EXPECT_NEAR(f.points[i].head<2>().norm(), 1, 1e-15);
+  }
+  // Down and tilted by 0.1 rad: the one rim point (1, 0, -1), not the base.
+  mink::support_feature(cone, Vec3(0.1, 0, -1), 1e-3, f);
+  ASSERT_EQ(f.count, 1);
+  EXPECT_LE((f.points[0] - Vec3(1, 0, -1)).norm(), 1e-15);
+  // Straight up: the apex.
+  mink::support_feature(cone, Vec3(0, 0, 3), 1e-3, f);
+  ASSERT_EQ(f.count, 1);
+  EXPECT_LE((f.points[0] - Vec3(0, 0, 1)).norm(), 1e-15);
+  // Along the side's outward normal (2, 0, 1) / sqrt(5): the side line from the apex to (1, 0, -1).
+  mink::support_feature(cone, Vec3(2, 0, 1), 1e-3, f);
+  ASSERT_EQ(f.count, 2);
+  EXPECT_LE(std::min((f.points[0] - Vec3(0, 0, 1)).norm(), (f.points[1] - Vec3(0, 0, 1)).norm()),
+            1e-15);
+  EXPECT_LE(std::min((f.points[0] - Vec3(1, 0, -1)).norm(), (f.points[1] - Vec3(1, 0, -1)).norm()),
+            1e-15);
+  // A cone of height 1e-6 seen from above, 1e-4 rad off its axis: a disk within the tolerance,
+  // so its rim, with normal +z.
+  const mink::Cone flat{1, 1e-6};
+  mink::support_feature(flat, Vec3(1e-4, 0, 1), 1e-3, f);
+  ASSERT_EQ(f.count, mink::kMaxFeaturePoints);
+  EXPECT_LE((f.normal - Vec3(0, 0, 1)).norm(), 1e-15);
+  // The same cone 0.1 rad off: its rim point (1, 0, -1e-6) rises 0.1 above the apex.
+  mink::support_feature(flat, Vec3(0.1, 0, 1), 1e-3, f);
+  ASSERT_EQ(f.count, 1);
+  EXPECT_LE((f.points[0] - Vec3(1, 0, -1e-6)).norm(), 1e-15);
+}
+
 TEST(ManifoldExact, FlatConeTurnedBySubnormalAnglesHasFinitePoints) {
   // Found by fuzzing: a flat cone under a rotation whose off-diagonal entries are 7e-319 (a
   // valid rotation to rounding). The direction's planar part was subnormal, and its side line
