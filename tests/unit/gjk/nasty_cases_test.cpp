@@ -435,9 +435,8 @@ TEST(GjkNasty, TinySegmentBesideAHugeOneKeepsItsNormal) {
         1e-12 * distance + 8 * std::numeric_limits<double>::epsilon() * (end.norm() + length);
     for (const mink::Shape* b : {&small, &rounded}) {
       for (const bool swapped : {false, true}) {
-        const auto r = swapped
-                           ? mink::distance(*b, at_p, long_segment, Pose::identity())
-                           : mink::distance(long_segment, Pose::identity(), *b, at_p);
+        const auto r = swapped ? mink::distance(*b, at_p, long_segment, Pose::identity())
+                               : mink::distance(long_segment, Pose::identity(), *b, at_p);
         ASSERT_EQ(r.status, mink::Status::Separated) << oracle::seed_note(381000) << " case " << k;
         EXPECT_NEAR(r.distance, distance, tol) << "case " << k;
         EXPECT_LE((r.normal - (swapped ? -normal : normal)).norm(), 1e-12 + tol / distance)
