@@ -47,7 +47,9 @@ struct SupportMinimum {
 /// jumps), alternating with the secant of the slope, which is fast on a smooth minimum. At a kink
 /// the next circle follows the valley: its direction is minus the least combination of the
 /// gradients on either side (a bundle of two), not the one-sided gradient, which would only
-/// zigzag across.
+/// zigzag across. After a circle that ended on a smooth minimum the next one takes the conjugate
+/// direction (nonlinear conjugate gradients, Polak-Ribiere), which steepest descent would also
+/// only zigzag towards down a long smooth valley.
 template <ConvexShape A, ConvexShape B>
 bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
                      typename A::Scalar gain_tol, int max_iterations, int& iterations,
@@ -55,17 +57,35 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
   using S = typename A::Scalar;
   bool have_other = false;  // a support point across the kink the last circle ended at
   Vec3T<S> other = Vec3T<S>::Zero();
+  // The last circle's direction and gradient, carried along the circle to its best point, for
+  // the conjugate direction; smooth: that circle ended on a smooth minimum, not at a kink.
+  bool have_previous = false, smooth = false;
+  Vec3T<S> previous_direction = Vec3T<S>::Zero(), previous_gradient = Vec3T<S>::Zero();
   while (iterations < max_iterations) {
     const Vec3T<S> u = best.normal;
     Vec3T<S> gradient = best.vertex.w - u.dot(best.vertex.w) * u;  // tangential part
+    const bool bundled = have_other;
     if (have_other) {
       const Vec3T<S> across = other - u.dot(other) * u - gradient;
       const S aa = across.squaredNorm();
       if (aa > S(0)) gradient += std::clamp(-gradient.dot(across) / aa, S(0), S(1)) * across;
     }
-    const S slope = gradient.norm();
+    if (!(gradient.squaredNorm() > S(0))) return true;
+    // Steepest descent zigzags down a long valley (an ellipsoid's minimum, whose curvatures
+    // differ 1e3-fold) and spent the whole budget there; the conjugate direction (Polak-Ribiere,
+    // restarted at kinks and whenever it stops descending) walks down it in a few circles.
+    Vec3T<S> direction = -gradient;
+    if (have_previous && smooth) {
+      const S beta = std::max(
+          S(0), gradient.dot(gradient - previous_gradient) / previous_gradient.squaredNorm());
+      const Vec3T<S> conjugate = direction + beta * previous_direction;
+      const Vec3T<S> tangent = conjugate - u.dot(conjugate) * u;
+      if (std::isfinite(beta) && tangent.dot(gradient) < S(0)) direction = tangent;
+    }
+    const S direction_length = direction.norm();
+    const Vec3T<S> v = direction / direction_length;
+    const S slope = -gradient.dot(v);  // > 0: h falls at this rate along v
     if (!(slope > S(0))) return true;
-    const Vec3T<S> v = -gradient / slope;
     // The minimum on the circle is within t = 2 (value - lower) / slope: at a kink h rises from
     // there at the slope at least, on a smooth minimum the drop is at most that.
     S lo = S(0), hi = std::min(S(2) * (best.value - lower) / slope, S(0.5));
@@ -75,7 +95,16 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
     bool bracketed = false;
     int trials = 0;
     const S start = best.value;
-    while (iterations < max_iterations && (hi - lo) * slope > gain_tol) {
+    S t_best = S(0);
+    // The bracket is narrowed until what is left of it could gain at most gain_tol; on a smooth
+    // minimum (the slope changes little across the bracket) a thousandth of what the circle has
+    // gained is enough, as the next circle goes on from there. A kink must be pinned down.
+    auto narrow_enough = [&] {
+      const S left = (hi - lo) * slope;
+      return left <= gain_tol || (bracketed && slope_hi - slope_lo <= S(0.25) * slope &&
+                                  left <= S(1e-3) * (start - best.value));
+    };
+    while (iterations < max_iterations && !narrow_enough()) {
       S t = hi;
       if (bracketed) {
         // Alternately where the planes of s_lo and s_hi cross, (s_lo - s_hi) . u(t) = 0, and
@@ -97,6 +126,7 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
       ++iterations;
       const S h = d.dot(w.w);
       if (!(std::abs(h) <= std::numeric_limits<S>::max())) return false;
+      if (h < best.value) t_best = t;
       best.offer(h, d, w);
       const S slope_t = w.w.dot(std::cos(t) * v - std::sin(t) * u);
       if (slope_t < S(0)) {  // still descending at t
@@ -115,7 +145,24 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
     // The bracket's end that is not the best point lies across the minimum from it.
     have_other = bracketed;
     other = best.vertex.w == s_hi ? s_lo : s_hi;
-    if (!(start - best.value > gain_tol)) return true;  // this circle gained nothing: a minimum
+    // The circle ended at a kink when the slope still jumps across its final bracket by a good
+    // part of the starting slope; on a smooth minimum the jump shrinks with the bracket.
+    smooth = !(bracketed && slope_hi - slope_lo > S(0.25) * slope);
+    if (!(start - best.value > gain_tol)) {
+      // Nothing gained: a minimum, unless the bundle has not been tried across the bracket yet.
+      // (A point inside a cylinder, nearer its side: the minimum lies on the kink circle where
+      // the support jumps from one rim to the other, and the first circle ends on it at once.)
+      if (!have_other || bundled) return true;
+      have_previous = false;
+      continue;
+    }
+    // Carried to the best point along the circle, v turns into cos t v - sin t u; the part of
+    // the gradient across the circle stays as it is.
+    const Vec3T<S> v_there = std::cos(t_best) * v - std::sin(t_best) * u;
+    const S along = gradient.dot(v);
+    previous_direction = direction_length * v_there;
+    previous_gradient = gradient - along * v + along * v_there;
+    have_previous = true;
   }
   return true;
 }

@@ -16,6 +16,7 @@
 #include "oracle/brute_force.hpp"
 #include "oracle/contact_check.hpp"
 #include "oracle/curved.hpp"
+#include "oracle/curved_to_mink.hpp"
 #include "oracle/penetration.hpp"
 
 namespace {
@@ -584,6 +585,85 @@ TEST(ContactNasty, ConesMeetingAtKinks) {
     const V3 n = widen(r.normal);
     const Real h = oracle::world_support(oa, opa, n) + oracle::world_support(ob, opb, -n);
     EXPECT_LE(static_cast<double>(h - expected.depth), 1e-9 * size) << oracle::describe(r);
+  }
+}
+
+TEST(ContactNasty, CurvedMinimaReachedByTheDescent) {
+  // Found by the curved-shape sweep at 40 times its size: penetrating curved shapes where EPA
+  // leaves its bracket open and the descent on h (support_descent.hpp) has the last quarter of
+  // the support calls. Steepest descent zigzagged down the long valley of two ellipsoids (9e-6 and
+  // 1.5e-7 of the size off when the budget ran out), and stopped at once on a sphere's centre
+  // inside a cylinder near its side, whose minimum lies on the kink circle where the support
+  // jumps between the rims (1.3e-9 off). Depth and normal against the independent oracle.
+  struct Pair {
+    oracle::CurvedShape a;
+    Mat3 rotation_a;
+    Vec3 ta;
+    oracle::CurvedShape b;
+    Mat3 rotation_b;
+    Vec3 tb;
+  };
+  using oracle::CurvedKind;
+  Mat3 ra0, rb0, ra1, rb1, rb2;
+  ra0 << 0, 0, -1, -1, 0, 0, 0, 1, 0;
+  rb0 << -1, 0, 0, 0, 0, -1, 0, -1, 0;
+  ra1 << -0.050963009016514071, 0.59721607842699531, 0.80045969753652435, -0.92518073721798832,
+      0.27359641233083831, -0.26303156966507601, -0.37608958399929482, -0.75397477333659846,
+      0.53858951528902077;
+  rb1 << -0.61027803920110379, 0.49776763688818321, -0.61626949830054911, -0.72474141976454998,
+      -0.036712624280171413, 0.68804219179940396, 0.31986026534491763, 0.86653307085489661,
+      0.38315773223081628;
+  rb2 << 0.21259901644973819, -0.97713952852425534, 0, -0.97713952852425534, -0.21259901644973819,
+      0, 0, 0, -1;
+  const Pair pairs[] = {
+      {{CurvedKind::Ellipsoid, 0, 0,
+        V3(0.60645081997630634, 0.5231706534801015, 1.2044055530870996)},
+       ra0,
+       Vec3(0.23866300114782057, -0.17511638175091215, 0.53839646913304495),
+       {CurvedKind::Ellipsoid, 0, 0,
+        V3(1.0501290493632229, 0.34136875798037419, 0.2179396182232114)},
+       rb0,
+       Vec3(1.8275638327478845, -0.17511638175091215, 0.53839646913304495)},
+      {{CurvedKind::Cylinder, 0.22731756040645346, 0.75070681525707517, V3::Zero()},
+       ra1,
+       Vec3(0.41671846215444996, 0.72428772645964123, -0.2268572843183656),
+       {CurvedKind::Sphere, 0.20827655722729957, 0, V3::Zero()},
+       rb1,
+       Vec3(0.41587160810434765, 0.72352872532427848, -0.226606388895013)},
+      {{CurvedKind::Ellipsoid, 0, 0,
+        V3(0.2285359668549399, 0.49885264230444609, 0.55391618781266672)},
+       Mat3::Identity(),
+       Vec3(34.498606090351643, 61.191973903271993, 997.46534849213822),
+       {CurvedKind::Ellipsoid, 0, 0,
+        V3(0.48595540336766696, 1.0440152510046263, 0.46279610372197627)},
+       rb2,
+       Vec3(34.498606090351643, 61.191973903271993, 997.37884649975229)},
+  };
+  for (const Pair& pair : pairs) {
+    Pose pa = Pose::from_translation(pair.ta), pb = Pose::from_translation(pair.tb);
+    pa.rotation = pair.rotation_a;
+    pb.rotation = pair.rotation_b;
+    const oracle::RigidPose opa{pa.rotation.cast<Real>(), widen(pa.translation)};
+    const oracle::RigidPose opb{pb.rotation.cast<Real>(), widen(pb.translation)};
+    const auto expected = oracle::curved_depth(pair.a, opa, pair.b, opb);
+    const double size =
+        static_cast<double>(oracle::bounding_radius(pair.a) + oracle::bounding_radius(pair.b));
+    oracle::with_mink_shape(pair.a, [&](const auto& a) {
+      oracle::with_mink_shape(pair.b, [&](const auto& b) {
+        const auto r = mink::contact(a, pa, b, pb);
+        EXPECT_TRUE(oracle::all_finite(r)) << oracle::describe(r);
+        EXPECT_TRUE(r.intersect) << oracle::describe(r);
+        EXPECT_NEAR(r.depth, static_cast<double>(expected.depth), 1e-9 * size)
+            << oracle::describe(r);
+        const V3 n = widen(r.normal);
+        const Real h =
+            oracle::world_support(pair.a, opa, n) + oracle::world_support(pair.b, opb, -n);
+        EXPECT_LE(static_cast<double>(h - expected.depth), 1e-9 * size) << oracle::describe(r);
+        // The answer says how far it may be off, and it is no further.
+        EXPECT_LE(std::abs(r.depth - static_cast<double>(expected.depth)),
+                  r.error_bound + 1e-12 * size);
+      });
+    });
   }
 }
 
