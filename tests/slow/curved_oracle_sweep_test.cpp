@@ -668,7 +668,11 @@ void judge(const Case& c, const oracle::CurvedDepth& expected, const std::string
   if (r.status == mink::Status::IterationLimit) {
     if (error <= r.error_bound + tol) {
       ++tally.flagged;
-      if (error > tol) ++tally.flagged_off;
+      if (error > tol) {
+        ++tally.flagged_off;
+        std::printf("[ off      ] %s: %.3g of the size%s\n", label.c_str(), error / size,
+                    account(c, expected, r, depth_error, optimality, size).c_str());
+      }
       if (error / size >= tally.worst_flagged) {
         tally.worst_flagged = error / size;
         tally.worst_flagged_account =
@@ -1072,7 +1076,10 @@ bool judge_query(const Placement& p, const R& r, const std::string& label, Query
   if (r.status == mink::Status::IterationLimit) {
     if (finite && unit && error <= r.error_bound + tol) {
       ++tally.flagged;
-      if (error > tol) ++tally.flagged_off;
+      if (error > tol) {
+        ++tally.flagged_off;
+        std::printf("[ off      ] %s: %.3g of the size\n", label.c_str(), error / size);
+      }
       if (error / size >= tally.worst_flagged) {
         tally.worst_flagged = error / size;
         tally.worst_flagged_account = label + distance_account(p, describe(r), e, size);

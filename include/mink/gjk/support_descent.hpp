@@ -95,7 +95,7 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
     bool bracketed = false;
     int trials = 0;
     const S start = best.value;
-    S t_best = S(0);
+    S t_best = S(0), h_lo = start;
     // The bracket is narrowed until what is left of it could gain at most gain_tol; on a smooth
     // minimum (the slope changes little across the bracket) a thousandth of what the circle has
     // gained is enough, as the next circle goes on from there. A kink must be pinned down.
@@ -129,8 +129,11 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
       if (h < best.value) t_best = t;
       best.offer(h, d, w);
       const S slope_t = w.w.dot(std::cos(t) * v - std::sin(t) * u);
-      if (slope_t < S(0)) {  // still descending at t
+      // Still descending at t, and lower than at lo: else a minimum lies between them (h on a
+      // circle is not convex: past a hump, a tiny slope's first step lands descending again).
+      if (slope_t < S(0) && h < h_lo) {
         lo = t;
+        h_lo = h;
         s_lo = w.w;
         slope_lo = slope_t;
         if (!bracketed) hi = std::min(hi * S(4), S(1.5));
@@ -146,8 +149,12 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
     have_other = bracketed;
     other = best.vertex.w == s_hi ? s_lo : s_hi;
     // The circle ended at a kink when the slope still jumps across its final bracket by a good
-    // part of the starting slope; on a smooth minimum the jump shrinks with the bracket.
-    smooth = !(bracketed && slope_hi - slope_lo > S(0.25) * slope);
+    // part of the starting slope, and by more than a smooth h allows: its second derivative along
+    // a circle, the radius of curvature of A - B minus h, is at most the diameter of A - B, which
+    // the support points bound (4 |w| with room to spare).
+    const S jump = slope_hi - slope_lo;
+    const S diameter = S(4) * std::sqrt(std::max(s_lo.squaredNorm(), s_hi.squaredNorm()));
+    smooth = !(bracketed && jump > S(0.25) * slope && jump > diameter * (hi - lo));
     if (!(start - best.value > gain_tol)) {
       // Nothing gained: a minimum, unless the bundle has not been tried across the bracket yet.
       // (A point inside a cylinder, nearer its side: the minimum lies on the kink circle where

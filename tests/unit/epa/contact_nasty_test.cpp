@@ -594,7 +594,10 @@ TEST(ContactNasty, CurvedMinimaReachedByTheDescent) {
   // the support calls. Steepest descent zigzagged down the long valley of two ellipsoids (9e-6 and
   // 1.5e-7 of the size off when the budget ran out), and stopped at once on a sphere's centre
   // inside a cylinder near its side, whose minimum lies on the kink circle where the support
-  // jumps between the rims (1.3e-9 off). Depth and normal against the independent oracle.
+  // jumps between the rims (1.3e-9 off). A sphere inside an ellipsoid, off its centre: the first
+  // step of a circle with a tiny slope landed past a hump of h, still descending but higher,
+  // and the descent stopped 1.5e-6 of the size short. Depth and normal against the independent
+  // oracle.
   struct Pair {
     oracle::CurvedShape a;
     Mat3 rotation_a;
@@ -613,6 +616,9 @@ TEST(ContactNasty, CurvedMinimaReachedByTheDescent) {
   rb1 << -0.61027803920110379, 0.49776763688818321, -0.61626949830054911, -0.72474141976454998,
       -0.036712624280171413, 0.68804219179940396, 0.31986026534491763, 0.86653307085489661,
       0.38315773223081628;
+  Mat3 rb3;
+  rb3 << 0.88601755041563068, 0.46365170155568858, 0, 0.46365170155568858, -0.88601755041563068, 0,
+      0, 0, -1;
   rb2 << 0.21259901644973819, -0.97713952852425534, 0, -0.97713952852425534, -0.21259901644973819,
       0, 0, 0, -1;
   const Pair pairs[] = {
@@ -638,6 +644,13 @@ TEST(ContactNasty, CurvedMinimaReachedByTheDescent) {
         V3(0.48595540336766696, 1.0440152510046263, 0.46279610372197627)},
        rb2,
        Vec3(34.498606090351643, 61.191973903271993, 997.37884649975229)},
+      {{CurvedKind::Sphere, 0.29673580958376289, 0, V3::Zero()},
+       Mat3::Identity(),
+       Vec3(-0.20602323359144903, -0.71993144646572027, 0.018814061319904596),
+       {CurvedKind::Ellipsoid, 0, 0,
+        V3(0.93610351151489535, 1.1789478019736852, 0.96293706253356504)},
+       rb3,
+       Vec3(-0.20602323359144903, -0.71993144646572027, -0.030092842381472001)},
   };
   for (const Pair& pair : pairs) {
     Pose pa = Pose::from_translation(pair.ta), pb = Pose::from_translation(pair.tb);
