@@ -22,9 +22,11 @@ struct TolerancesT {
   /// cores linearly, hence a looser default than `relative`). (unit: dimensionless)
   S relative_depth = std::max(S(1e-10), S(64) * std::numeric_limits<S>::epsilon());
   /// Cap on support evaluations (per GJK run and per EPA run); hitting it gives
-  /// Status::IterationLimit. Polytopes need about 3 + log(points) iterations; curved shapes
-  /// converge linearly and need up to a few dozen.
-  int max_iterations = 256;
+  /// Status::IterationLimit. Polytopes need about 3 + log(points) iterations and GJK on curved
+  /// shapes a few dozen; EPA on penetrating curved shapes can need hundreds, and where a circle
+  /// of normals is equally good (coaxial cylinders, cones, spheroids) it runs to the cap
+  /// (docs/conventions.md).
+  int max_iterations = 512;
 };
 
 using Tolerances = TolerancesT<double>;
