@@ -142,18 +142,20 @@ bool assemble(std::span<const Vec3> points, const Frame& frame, const std::vecto
     error = "a vertex is shared by two separate fans";
     return false;
   }
-  // Volume and area in the local frame, then scaled back exactly.
-  const Vec3 o = frame.q[static_cast<std::size_t>(loop.front())];
+  // Volume and area in the local frame, then scaled back exactly. Each tetrahedron's volume is
+  // taken to within roundoff of its exact value (exact::orient3d_value()): on a needle or a
+  // sliver of a hull, plain products round to more than the volume itself (a needle 1e-9 thin
+  // got a negative volume).
+  const Vec3& o = frame.q[static_cast<std::size_t>(loop.front())];
   double volume = 0, area = 0;
   for (std::size_t f = 0; f < f_count; ++f) {
-    const Vec3 a = frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(start[f])])] - o;
+    const Vec3& a = frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(start[f])])];
     Vec3 vector_area = Vec3::Zero();
     for (int i = start[f] + 1; i + 1 < start[f + 1]; ++i) {
-      const Vec3 b = frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(i)])] - o;
-      const Vec3 c = frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(i) + 1])] - o;
-      const Vec3 cr = (b - a).cross(c - a);
-      vector_area += cr;
-      volume += a.dot(b.cross(c));
+      const Vec3& b = frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(i)])];
+      const Vec3& c = frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(i) + 1])];
+      vector_area += (b - a).cross(c - a);
+      volume += exact::orient3d_value(o.data(), b.data(), c.data(), a.data());
     }
     area += 0.5 * vector_area.norm();
   }
@@ -163,27 +165,52 @@ bool assemble(std::span<const Vec3> points, const Frame& frame, const std::vecto
   return true;
 }
 
-/// The convex polygon of points (local frame) lying within the tolerance of a plane with normal
-/// n: monotone chain on the two coordinates other than n's largest, with exact turns. The loop
-/// is counter-clockwise about n.
-std::vector<int> flat_polygon(const std::vector<Vec3>& q, const Vec3& n) {
-  int k = 0;
-  for (int i = 1; i < 3; ++i) {
-    if (std::fabs(n[i]) > std::fabs(n[k])) k = i;
+/// Whether merged faces fail to make a convex polyhedron the way merging within a tolerance can
+/// fail: fewer than four faces, or two faces that share more than one edge (the two sides of a
+/// folded needle; convex faces meet along one edge at most).
+bool folded(const detail::PolygonFaces& faces) {
+  const std::size_t f_count = faces.start.size() - 1;
+  if (f_count < 4) return true;
+  std::vector<std::pair<std::pair<int, int>, std::uint32_t>> edges;
+  for (std::size_t f = 0; f < f_count; ++f) {
+    const int first = faces.start[f], count = faces.start[f + 1] - first;
+    for (int k = 0; k < count; ++k) {
+      const int u = faces.loop[static_cast<std::size_t>(first + k)];
+      const int v = faces.loop[static_cast<std::size_t>(first + (k + 1) % count)];
+      edges.push_back({{std::min(u, v), std::max(u, v)}, static_cast<std::uint32_t>(f)});
+    }
   }
-  const int i = (k + 1) % 3, j = (k + 2) % 3;
+  std::sort(edges.begin(), edges.end());
+  // Each edge appears twice, once per face; a pair of faces met twice is a fold.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> meetings;
+  for (std::size_t i = 0; i + 1 < edges.size(); i += 2) {
+    const std::uint32_t f = edges[i].second, g = edges[i + 1].second;
+    meetings.push_back({std::min(f, g), std::max(f, g)});
+  }
+  std::sort(meetings.begin(), meetings.end());
+  return std::adjacent_find(meetings.begin(), meetings.end()) != meetings.end();
+}
+
+/// The convex polygon of points (local frame) lying within the tolerance of a plane with normal
+/// n: monotone chain in the plane's own frame, with exact turns seen along n. (A chain on two
+/// coordinates, dropping n's largest, is convex in that projection only: points up to the
+/// tolerance off the plane shift by up to sqrt(2) times that across it, and a needle 1e-9 wide
+/// had a vertex 1.03 tolerances outside an edge.) The loop is counter-clockwise about n.
+std::vector<int> flat_polygon(const std::vector<Vec3>& q, const Vec3& n) {
+  const Vec3 e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+  std::vector<std::pair<double, double>> key(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) key[i] = {e1.dot(q[i]), e2.dot(q[i])};
   std::vector<int> order(q.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
-    const Vec3 &pa = q[static_cast<std::size_t>(a)], &pb = q[static_cast<std::size_t>(b)];
-    return pa[i] < pb[i] || (pa[i] == pb[i] && pa[j] < pb[j]);
+    return key[static_cast<std::size_t>(a)] < key[static_cast<std::size_t>(b)];
   });
   std::vector<int> chain(2 * q.size() + 1);
   std::size_t m = 0;
   auto turn = [&](int a, int b, int c) {
-    return exact::orient2d(q[static_cast<std::size_t>(a)].data(),
-                           q[static_cast<std::size_t>(b)].data(),
-                           q[static_cast<std::size_t>(c)].data(), i, j);
+    return exact::orient_along(q[static_cast<std::size_t>(a)].data(),
+                               q[static_cast<std::size_t>(b)].data(),
+                               q[static_cast<std::size_t>(c)].data(), n.data());
   };
   for (const int v : order) {  // lower chain
     while (m >= 2 && turn(chain[m - 2], chain[m - 1], v) <= 0) --m;
@@ -195,7 +222,6 @@ std::vector<int> flat_polygon(const std::vector<Vec3>& q, const Vec3& n) {
     chain[m++] = *it;
   }
   chain.resize(m > 1 ? m - 1 : m);
-  if (n[k] < 0) std::reverse(chain.begin(), chain.end());
   return chain;
 }
 
@@ -372,9 +398,9 @@ Expected<ConvexHull> build_convex_hull(std::span<const Vec3> points, const HullO
   std::vector<Vec3> normals;
   std::vector<double> offsets;
   std::string error;
-  if (s_hi - s_lo <= tol) {
-    // ---- Flat: one polygon, front and back ----
-    std::vector<int> poly = flat_polygon(q, nrm);
+  // ---- Flat: one polygon, front and back ----
+  auto flat_hull = [&](const Vec3& normal) -> Expected<ConvexHull> {
+    std::vector<int> poly = flat_polygon(q, normal);
     if (poly.size() < 3) return fail("internal error: flat polygon has fewer than 3 vertices");
     if (options.max_vertices != 0 && poly.size() > options.max_vertices) {
       hull.max_outside = reduce_polygon(q, poly, options.max_vertices) / frame.scale;
@@ -382,20 +408,21 @@ Expected<ConvexHull> build_convex_hull(std::span<const Vec3> points, const HullO
     }
     double front = -HUGE_VAL, back = -HUGE_VAL;
     for (std::size_t i = 0; i < n; ++i) {
-      front = std::max(front, dot_up(nrm, q[i]));
-      back = std::max(back, dot_up(-nrm, q[i]));
+      front = std::max(front, dot_up(normal, q[i]));
+      back = std::max(back, dot_up(-normal, q[i]));
     }
     loop = poly;
     loop.insert(loop.end(), poly.rbegin(), poly.rend());
     start = {0, static_cast<int>(poly.size()), static_cast<int>(2 * poly.size())};
-    normals = {nrm, -nrm};
+    normals = {normal, -normal};
     offsets = {front, back};
     hull.status = HullStatus::Flat;
     if (!assemble(points, frame, loop, start, normals, offsets, hull, error))
       return fail("internal error: " + error);
     hull.volume = 0;
     return hull;
-  }
+  };
+  if (s_hi - s_lo <= tol) return flat_hull(nrm);
 
   // ---- Full ----
   const int d = -s_lo > s_hi ? d_lo : d_hi;
@@ -430,6 +457,14 @@ Expected<ConvexHull> build_convex_hull(std::span<const Vec3> points, const HullO
   detail::PolygonFaces faces;
   if (!detail::build_polygon_faces(hull_q, triangles, tol, faces, error))
     return fail("internal error: " + error);
+  if (folded(faces)) {
+    // Merging within the tolerance folded a needle about as thin as the tolerance across its
+    // length (but not flat along the first triangle's plane, step 2) onto two faces that meet
+    // along both its sides. Its exact facets are a true solid: keep them unmerged.
+    faces = {};
+    if (!detail::build_polygon_faces(hull_q, triangles, 0.0, faces, error))
+      return fail("internal error: " + error);
+  }
   for (int& v : faces.loop) v = kept[static_cast<std::size_t>(v)];
   hull.status = HullStatus::Full;
   hull.complete = triangles.complete;

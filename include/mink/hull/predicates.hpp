@@ -250,6 +250,12 @@ inline int orient3d(const double* a, const double* b, const double* c, const dou
   return orient3d_exact(a, b, c, d);
 }
 
+/// det[b - a, c - a, d - a] itself, within a few units of roundoff of its exact value however
+/// flat the tetrahedron (a volume of a hull 1e-9 thin: the plain evaluation's rounding, eps
+/// times the permanent, exceeds the value itself). Filtered like orient3d(): the double value
+/// when its error bound is below 2^-40 of it, else the exact value rounded.
+inline double orient3d_value(const double* a, const double* b, const double* c, const double* d);
+
 /// Exact sign of det[b - a, c - a, n] = ((b - a) x (c - a)) . n for points a, b, c and a vector
 /// n: positive when a, b, c turn counter-clockwise seen from the tip of n.
 inline int orient_along_exact(const double* a, const double* b, const double* c, const double* n);
@@ -312,17 +318,39 @@ inline Expansion<16> cross_component(const Expansion<2>* u, const Expansion<2>* 
 
 }  // namespace detail
 
-inline int orient3d_exact(const double* a, const double* b, const double* c, const double* d) {
+namespace detail {
+
+/// det[b - a, c - a, d - a] as an exact expansion.
+inline auto orient3d_expansion(const double* a, const double* b, const double* c, const double* d) {
   Expansion<2> u[3], v[3], w[3];
   for (int k = 0; k < 3; ++k) {
     u[k] = difference(b[k], a[k]);
     v[k] = difference(c[k], a[k]);
     w[k] = difference(d[k], a[k]);
   }
-  const auto t0 = mul(w[0], detail::cross_component(u, v, 0));
-  const auto t1 = mul(w[1], detail::cross_component(u, v, 1));
-  const auto t2 = mul(w[2], detail::cross_component(u, v, 2));
-  return sign(add(add(t0, t1), t2));
+  const auto t0 = mul(w[0], cross_component(u, v, 0));
+  const auto t1 = mul(w[1], cross_component(u, v, 1));
+  const auto t2 = mul(w[2], cross_component(u, v, 2));
+  return add(add(t0, t1), t2);
+}
+
+}  // namespace detail
+
+inline int orient3d_exact(const double* a, const double* b, const double* c, const double* d) {
+  return sign(detail::orient3d_expansion(a, b, c, d));
+}
+
+inline double orient3d_value(const double* a, const double* b, const double* c, const double* d) {
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+  const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
+  const double p1 = uy * vz, p2 = uz * vy, p3 = uz * vx, p4 = ux * vz, p5 = ux * vy, p6 = uy * vx;
+  const double det = wx * (p1 - p2) + wy * (p3 - p4) + wz * (p5 - p6);
+  const double perm = std::fabs(wx) * (std::fabs(p1) + std::fabs(p2)) +
+                      std::fabs(wy) * (std::fabs(p3) + std::fabs(p4)) +
+                      std::fabs(wz) * (std::fabs(p5) + std::fabs(p6));
+  if (9 * kUnitRoundoff * perm <= 0x1p-40 * std::fabs(det)) return det;
+  return estimate(detail::orient3d_expansion(a, b, c, d));
 }
 
 inline int orient_along_exact(const double* a, const double* b, const double* c, const double* n) {
