@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -142,23 +143,35 @@ bool assemble(std::span<const Vec3> points, const Frame& frame, const std::vecto
     error = "a vertex is shared by two separate fans";
     return false;
   }
-  // Volume and area in the local frame, then scaled back exactly. Each tetrahedron's volume is
-  // taken to within roundoff of its exact value (exact::orient3d_value()): on a needle or a
-  // sliver of a hull, plain products round to more than the volume itself (a needle 1e-9 thin
-  // got a negative volume).
+  // Volume and area in the local frame, then scaled back exactly. The volume is a sum of
+  // tetrahedra from one vertex; when their rounding could be more than 1e-10 of the sum (on a
+  // needle or a sliver of a hull it can exceed the volume itself), each is taken again to within
+  // roundoff of its exact value.
   const Vec3& o = frame.q[static_cast<std::size_t>(loop.front())];
-  double volume = 0, area = 0;
-  for (std::size_t f = 0; f < f_count; ++f) {
-    const Vec3& a = frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(start[f])])];
-    Vec3 vector_area = Vec3::Zero();
-    for (int i = start[f] + 1; i + 1 < start[f + 1]; ++i) {
-      const Vec3& b = frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(i)])];
-      const Vec3& c = frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(i) + 1])];
-      vector_area += (b - a).cross(c - a);
-      volume += exact::orient3d_value(o.data(), b.data(), c.data(), a.data());
+  auto for_each_tetrahedron = [&](auto&& visit) {
+    for (std::size_t f = 0; f < f_count; ++f) {
+      const Vec3& a = frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(start[f])])];
+      for (int i = start[f] + 1; i + 1 < start[f + 1]; ++i)
+        visit(f, a, frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(i)])],
+              frame.q[static_cast<std::size_t>(loop[static_cast<std::size_t>(i) + 1])]);
     }
-    area += 0.5 * vector_area.norm();
+  };
+  double volume = 0, volume_bound = 0;
+  std::vector<Vec3> vector_area(f_count, Vec3::Zero());
+  for_each_tetrahedron([&](std::size_t f, const Vec3& a, const Vec3& b, const Vec3& c) {
+    vector_area[f] += (b - a).cross(c - a);
+    double bound;
+    volume += exact::orient3d_estimate(o.data(), b.data(), c.data(), a.data(), bound);
+    volume_bound += bound;
+  });
+  if (!(volume_bound <= 1e-10 * volume)) {
+    volume = 0;
+    for_each_tetrahedron([&](std::size_t, const Vec3& a, const Vec3& b, const Vec3& c) {
+      volume += exact::orient3d_value(o.data(), b.data(), c.data(), a.data());
+    });
   }
+  double area = 0;
+  for (const Vec3& va : vector_area) area += 0.5 * va.norm();
   const double inv = 1 / frame.scale;
   hull.volume = volume / 6 * inv * inv * inv;
   hull.area = area * inv * inv;
@@ -166,29 +179,21 @@ bool assemble(std::span<const Vec3> points, const Frame& frame, const std::vecto
 }
 
 /// Whether merged faces fail to make a convex polyhedron the way merging within a tolerance can
-/// fail: fewer than four faces, or two faces that share more than one edge (the two sides of a
-/// folded needle; convex faces meet along one edge at most).
-bool folded(const detail::PolygonFaces& faces) {
-  const std::size_t f_count = faces.start.size() - 1;
+/// fail: fewer than four faces, or two faces that meet along more than one edge (the two sides
+/// of a folded needle; convex faces share one edge at most).
+bool folded(const ConvexHull& hull) {
+  const std::size_t f_count = hull.faces.size();
   if (f_count < 4) return true;
-  std::vector<std::pair<std::pair<int, int>, std::uint32_t>> edges;
-  for (std::size_t f = 0; f < f_count; ++f) {
-    const int first = faces.start[f], count = faces.start[f + 1] - first;
-    for (int k = 0; k < count; ++k) {
-      const int u = faces.loop[static_cast<std::size_t>(first + k)];
-      const int v = faces.loop[static_cast<std::size_t>(first + (k + 1) % count)];
-      edges.push_back({{std::min(u, v), std::max(u, v)}, static_cast<std::uint32_t>(f)});
+  std::vector<std::uint32_t> met(f_count, std::numeric_limits<std::uint32_t>::max());
+  for (std::uint32_t f = 0; f < f_count; ++f) {
+    const HullFace& face = hull.faces[f];
+    for (std::uint32_t k = 0; k < face.count; ++k) {
+      const std::uint32_t g = hull.half_edges[hull.half_edges[face.first + k].twin].face;
+      if (met[g] == f) return true;
+      met[g] = f;
     }
   }
-  std::sort(edges.begin(), edges.end());
-  // Each edge appears twice, once per face; a pair of faces met twice is a fold.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> meetings;
-  for (std::size_t i = 0; i + 1 < edges.size(); i += 2) {
-    const std::uint32_t f = edges[i].second, g = edges[i + 1].second;
-    meetings.push_back({std::min(f, g), std::max(f, g)});
-  }
-  std::sort(meetings.begin(), meetings.end());
-  return std::adjacent_find(meetings.begin(), meetings.end()) != meetings.end();
+  return false;
 }
 
 /// The convex polygon of points (local frame) lying within the tolerance of a plane with normal
@@ -398,9 +403,9 @@ Expected<ConvexHull> build_convex_hull(std::span<const Vec3> points, const HullO
   std::vector<Vec3> normals;
   std::vector<double> offsets;
   std::string error;
-  // ---- Flat: one polygon, front and back ----
-  auto flat_hull = [&](const Vec3& normal) -> Expected<ConvexHull> {
-    std::vector<int> poly = flat_polygon(q, normal);
+  if (s_hi - s_lo <= tol) {
+    // ---- Flat: one polygon, front and back ----
+    std::vector<int> poly = flat_polygon(q, nrm);
     if (poly.size() < 3) return fail("internal error: flat polygon has fewer than 3 vertices");
     if (options.max_vertices != 0 && poly.size() > options.max_vertices) {
       hull.max_outside = reduce_polygon(q, poly, options.max_vertices) / frame.scale;
@@ -408,21 +413,20 @@ Expected<ConvexHull> build_convex_hull(std::span<const Vec3> points, const HullO
     }
     double front = -HUGE_VAL, back = -HUGE_VAL;
     for (std::size_t i = 0; i < n; ++i) {
-      front = std::max(front, dot_up(normal, q[i]));
-      back = std::max(back, dot_up(-normal, q[i]));
+      front = std::max(front, dot_up(nrm, q[i]));
+      back = std::max(back, dot_up(-nrm, q[i]));
     }
     loop = poly;
     loop.insert(loop.end(), poly.rbegin(), poly.rend());
     start = {0, static_cast<int>(poly.size()), static_cast<int>(2 * poly.size())};
-    normals = {normal, -normal};
+    normals = {nrm, -nrm};
     offsets = {front, back};
     hull.status = HullStatus::Flat;
     if (!assemble(points, frame, loop, start, normals, offsets, hull, error))
       return fail("internal error: " + error);
     hull.volume = 0;
     return hull;
-  };
-  if (s_hi - s_lo <= tol) return flat_hull(nrm);
+  }
 
   // ---- Full ----
   const int d = -s_lo > s_hi ? d_lo : d_hi;
@@ -454,23 +458,25 @@ Expected<ConvexHull> build_convex_hull(std::span<const Vec3> points, const HullO
   detail::TriangleHull triangles;
   if (!detail::build_triangle_hull(hull_q, simplex, options.max_vertices, triangles, error))
     return fail("internal error: " + error);
-  detail::PolygonFaces faces;
-  if (!detail::build_polygon_faces(hull_q, triangles, tol, faces, error))
-    return fail("internal error: " + error);
-  if (folded(faces)) {
+  hull.status = HullStatus::Full;
+  hull.complete = triangles.complete;
+  // Faces merged within the tolerance, or (tolerance 0) the exact facets alone.
+  auto assemble_faces = [&](double merge_tolerance) {
+    detail::PolygonFaces faces;
+    if (!detail::build_polygon_faces(hull_q, triangles, merge_tolerance, faces, error))
+      return false;
+    for (int& v : faces.loop) v = kept[static_cast<std::size_t>(v)];
+    hull.max_outside = faces.max_outside / frame.scale;
+    return assemble(points, frame, faces.loop, faces.start, faces.normal, faces.offset, hull,
+                    error);
+  };
+  if (!assemble_faces(tol)) return fail("internal error: " + error);
+  if (folded(hull)) {
     // Merging within the tolerance folded a needle about as thin as the tolerance across its
     // length (but not flat along the first triangle's plane, step 2) onto two faces that meet
     // along both its sides. Its exact facets are a true solid: keep them unmerged.
-    faces = {};
-    if (!detail::build_polygon_faces(hull_q, triangles, 0.0, faces, error))
-      return fail("internal error: " + error);
+    if (!assemble_faces(0.0)) return fail("internal error: " + error);
   }
-  for (int& v : faces.loop) v = kept[static_cast<std::size_t>(v)];
-  hull.status = HullStatus::Full;
-  hull.complete = triangles.complete;
-  hull.max_outside = faces.max_outside / frame.scale;
-  if (!assemble(points, frame, faces.loop, faces.start, faces.normal, faces.offset, hull, error))
-    return fail("internal error: " + error);
   if (hull.vertices.size() + hull.faces.size() != hull.half_edges.size() / 2 + 2)
     return fail("internal error: Euler's formula does not hold");
   return hull;

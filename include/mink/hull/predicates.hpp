@@ -250,10 +250,14 @@ inline int orient3d(const double* a, const double* b, const double* c, const dou
   return orient3d_exact(a, b, c, d);
 }
 
-/// det[b - a, c - a, d - a] itself, within a few units of roundoff of its exact value however
-/// flat the tetrahedron (a volume of a hull 1e-9 thin: the plain evaluation's rounding, eps
-/// times the permanent, exceeds the value itself). Filtered like orient3d(): the double value
-/// when its error bound is below 2^-40 of it, else the exact value rounded.
+/// det[b - a, c - a, d - a] in double, and in `bound` a bound on its rounding error (the filter
+/// of orient3d()).
+inline double orient3d_estimate(const double* a, const double* b, const double* c, const double* d,
+                                double& bound);
+
+/// det[b - a, c - a, d - a] within a unit or so of roundoff of its exact value, however flat the
+/// tetrahedron: the exact expansion, rounded. (Where orient3d_estimate()'s bound exceeds the
+/// value: volumes of a hull 1e-9 thin.)
 inline double orient3d_value(const double* a, const double* b, const double* c, const double* d);
 
 /// Exact sign of det[b - a, c - a, n] = ((b - a) x (c - a)) . n for points a, b, c and a vector
@@ -340,16 +344,20 @@ inline int orient3d_exact(const double* a, const double* b, const double* c, con
   return sign(detail::orient3d_expansion(a, b, c, d));
 }
 
-inline double orient3d_value(const double* a, const double* b, const double* c, const double* d) {
+inline double orient3d_estimate(const double* a, const double* b, const double* c, const double* d,
+                                double& bound) {
   const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
   const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
   const double p1 = uy * vz, p2 = uz * vy, p3 = uz * vx, p4 = ux * vz, p5 = ux * vy, p6 = uy * vx;
-  const double det = wx * (p1 - p2) + wy * (p3 - p4) + wz * (p5 - p6);
   const double perm = std::fabs(wx) * (std::fabs(p1) + std::fabs(p2)) +
                       std::fabs(wy) * (std::fabs(p3) + std::fabs(p4)) +
                       std::fabs(wz) * (std::fabs(p5) + std::fabs(p6));
-  if (9 * kUnitRoundoff * perm <= 0x1p-40 * std::fabs(det)) return det;
+  bound = 9 * kUnitRoundoff * perm;
+  return wx * (p1 - p2) + wy * (p3 - p4) + wz * (p5 - p6);
+}
+
+inline double orient3d_value(const double* a, const double* b, const double* c, const double* d) {
   return estimate(detail::orient3d_expansion(a, b, c, d));
 }
 
