@@ -234,26 +234,29 @@ double estimate(const Expansion<N>& e) {
 /// the side of the plane through a, b, c that (b - a) x (c - a) points to.
 inline int orient3d_exact(const double* a, const double* b, const double* c, const double* d);
 
-/// The same sign, filtered: the exact evaluation only runs when rounding could flip it.
-inline int orient3d(const double* a, const double* b, const double* c, const double* d) {
+/// det[b - a, c - a, d - a] in double, and in `bound` a bound on its rounding error: the filter
+/// of orient3d().
+inline double orient3d_estimate(const double* a, const double* b, const double* c, const double* d,
+                                double& bound) {
   const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
   const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
   const double p1 = uy * vz, p2 = uz * vy, p3 = uz * vx, p4 = ux * vz, p5 = ux * vy, p6 = uy * vx;
-  const double det = wx * (p1 - p2) + wy * (p3 - p4) + wz * (p5 - p6);
   const double perm = std::fabs(wx) * (std::fabs(p1) + std::fabs(p2)) +
                       std::fabs(wy) * (std::fabs(p3) + std::fabs(p4)) +
                       std::fabs(wz) * (std::fabs(p5) + std::fabs(p6));
-  const double bound = 9 * kUnitRoundoff * perm;
+  bound = 9 * kUnitRoundoff * perm;
+  return wx * (p1 - p2) + wy * (p3 - p4) + wz * (p5 - p6);
+}
+
+/// The same sign, filtered: the exact evaluation only runs when rounding could flip it.
+inline int orient3d(const double* a, const double* b, const double* c, const double* d) {
+  double bound;
+  const double det = orient3d_estimate(a, b, c, d, bound);
   if (det > bound) return 1;
   if (det < -bound) return -1;
   return orient3d_exact(a, b, c, d);
 }
-
-/// det[b - a, c - a, d - a] in double, and in `bound` a bound on its rounding error (the filter
-/// of orient3d()).
-inline double orient3d_estimate(const double* a, const double* b, const double* c, const double* d,
-                                double& bound);
 
 /// det[b - a, c - a, d - a] within a unit or so of roundoff of its exact value, however flat the
 /// tetrahedron: the exact expansion, rounded. (Where orient3d_estimate()'s bound exceeds the
@@ -342,19 +345,6 @@ inline auto orient3d_expansion(const double* a, const double* b, const double* c
 
 inline int orient3d_exact(const double* a, const double* b, const double* c, const double* d) {
   return sign(detail::orient3d_expansion(a, b, c, d));
-}
-
-inline double orient3d_estimate(const double* a, const double* b, const double* c, const double* d,
-                                double& bound) {
-  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-  const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
-  const double p1 = uy * vz, p2 = uz * vy, p3 = uz * vx, p4 = ux * vz, p5 = ux * vy, p6 = uy * vx;
-  const double perm = std::fabs(wx) * (std::fabs(p1) + std::fabs(p2)) +
-                      std::fabs(wy) * (std::fabs(p3) + std::fabs(p4)) +
-                      std::fabs(wz) * (std::fabs(p5) + std::fabs(p6));
-  bound = 9 * kUnitRoundoff * perm;
-  return wx * (p1 - p2) + wy * (p3 - p4) + wz * (p5 - p6);
 }
 
 inline double orient3d_value(const double* a, const double* b, const double* c, const double* d) {
