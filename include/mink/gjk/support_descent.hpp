@@ -57,9 +57,9 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
   using S = typename A::Scalar;
   bool have_other = false;  // a support point across the kink the last circle ended at
   Vec3T<S> other = Vec3T<S>::Zero();
-  // The last circle's direction and gradient, carried along the circle to its best point, for
-  // the conjugate direction; smooth: that circle ended on a smooth minimum, not at a kink.
-  bool have_previous = false, smooth = false;
+  // smooth: the last circle gained and ended on a smooth minimum, not at a kink; its direction
+  // and gradient, carried along it to its best point, then give the conjugate direction.
+  bool smooth = false;
   Vec3T<S> previous_direction = Vec3T<S>::Zero(), previous_gradient = Vec3T<S>::Zero();
   while (iterations < max_iterations) {
     const Vec3T<S> u = best.normal;
@@ -75,7 +75,7 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
     // differ 1e3-fold) and spent the whole budget there; the conjugate direction (Polak-Ribiere,
     // restarted at kinks and whenever it stops descending) walks down it in a few circles.
     Vec3T<S> direction = -gradient;
-    if (have_previous && smooth) {
+    if (smooth) {
       const S beta = std::max(
           S(0), gradient.dot(gradient - previous_gradient) / previous_gradient.squaredNorm());
       const Vec3T<S> conjugate = direction + beta * previous_direction;
@@ -160,7 +160,7 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
       // (A point inside a cylinder, nearer its side: the minimum lies on the kink circle where
       // the support jumps from one rim to the other, and the first circle ends on it at once.)
       if (!have_other || bundled) return true;
-      have_previous = false;
+      smooth = false;
       continue;
     }
     // Carried to the best point along the circle, v turns into cos t v - sin t u; the part of
@@ -169,7 +169,6 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
     const S along = gradient.dot(v);
     previous_direction = direction_length * v_there;
     previous_gradient = gradient - along * v + along * v_there;
-    have_previous = true;
   }
   return true;
 }
