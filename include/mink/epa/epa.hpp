@@ -293,9 +293,11 @@ bool seed_polytope(EpaWorkspace<S>& ws) {
 /// A neighbour that w does not see but that would meet the new faces at a reflex angle, with no
 /// area or folded back (w lies within rounding of its plane: a curved core near convergence, a
 /// flat facet sampled at several points) is added to the region and the expansion tried again.
-/// Returns false, with P unchanged, if that does not give a valid convex P.
+/// Returns false, with P unchanged, if that does not give a valid convex P. `size` is EPA's (the
+/// sum of the bounding radii), `flat_tol` its flatness tolerance (unit: length).
 template <class S>
-bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, S flat_tol) {
+bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, S size,
+                     S flat_tol) {
   const int wi = static_cast<int>(ws.vertices.size());
   ws.vertices.push_back(w);
   ws.forced.clear();
@@ -351,7 +353,24 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
       // the new face folds back over g, and P would turn inside out there.
       const S above = created.n.dot(ws.vertices[far].w) - created.offset;
       const bool off_plane = above * above > flat_tol * flat_tol * created.nn;
-      if (off_plane ? above > S(0) : created.n.dot(ws.faces[g].n) < S(0)) {
+      // And the origin below the new face: P only grows and held the origin, so a face with the
+      // origin beyond it by more than rounding says that P has stopped being convex (w nearly in
+      // the plane of a large flat facet of A - B, sampled again and again, made new faces over a
+      // horizon that folds). The neighbour joins the region, and the fan is built over a wider
+      // horizon. Rounding here is the plane's: a sliver's normal is off by about eps over the
+      // sine of its angle (1e-8 across a needle's width), which moves the plane at the origin by
+      // eps size / sine, i.e. eps size |e1| |e2| / |n|.
+      auto beyond_rounding = [&] {
+        if (!(created.offset < S(0)) ||
+            !(created.offset * created.offset > flat_tol * flat_tol * created.nn))
+          return false;
+        const Vec3T<S>& w0 = ws.vertices[created.v[0]].w;
+        const S plane_error = S(64) * std::numeric_limits<S>::epsilon() * size;
+        return created.offset * created.offset >
+               plane_error * plane_error * (ws.vertices[created.v[1]].w - w0).squaredNorm() *
+                   (ws.vertices[created.v[2]].w - w0).squaredNorm();
+      };
+      if ((off_plane ? above > S(0) : created.n.dot(ws.faces[g].n) < S(0)) || beyond_rounding()) {
         valid = false;
         reflex = g;
         break;
@@ -573,7 +592,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     // w is a vertex of the face: h is its distance, to rounding.
     for (int k = 0; k < 3; ++k)
       if (ws.vertices[face.v[k]].w == w.w) return Step::Closed;
-    return expand_polytope(ws, f, w, flat_tol) ? Step::Expanded : Step::Stuck;
+    return expand_polytope(ws, f, w, size, flat_tol) ? Step::Expanded : Step::Stuck;
   };
   // The last quarter of the support calls is kept for the polish below.
   const int global_budget = tol.max_iterations - tol.max_iterations / 4;

@@ -84,10 +84,10 @@ int first_near_max(int count, S floor, S slack, Value&& value) {
 /// Indices of at most four of the `count` points (seen along the normal, with depths) that keep
 /// the deepest point and as much of the contact area as possible: the deepest point, the point
 /// farthest from it, the point making the largest triangle with those two, and the point that
-/// adds the most area outside that triangle. Points closer than `min_length` to a kept point (or
-/// to the line or triangle of the kept ones) are dropped as repeats; candidates within
-/// `min_length` (or the matching area) of the best count as ties and the first one wins. Returns
-/// the number kept.
+/// adds the most area outside that triangle. Points on a line keep the deepest and both ends.
+/// Points closer than `min_length` to a kept point (or to the line or triangle of the kept ones)
+/// are dropped as repeats; candidates within `min_length` (or the matching area) of the best count
+/// as ties and the first one wins. Returns the number kept.
 template <class S>
 int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* keep) {
   if (count <= 0) return 0;
@@ -129,7 +129,17 @@ int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* k
   const S min_area = min_length * std::sqrt(length_sq[b]);
   const int c = first_near_max(count, min_area, min_area,
                                [&](int i) { return std::abs(ab.area(points[i])); });
-  if (c < 0) return 2;
+  if (c < 0) {
+    // All on a line (skew edges): the deepest point may lie between the ends, so the end beyond
+    // it, opposite the farthest one, is kept too.
+    const S dx = pb.x - pa.x, dy = pb.y - pa.y;
+    const int e = first_near_max(count, min_area, min_area, [&](int i) {
+      return -((points[i].x - pa.x) * dx + (points[i].y - pa.y) * dy);
+    });
+    if (e < 0) return 2;
+    keep[2] = e;
+    return 3;
+  }
   keep[2] = c;
   // Counter-clockwise, so that a point outside an edge has a negative area with it.
   PlanarPoint<S> t0 = pa, t1 = pb, t2 = points[c];

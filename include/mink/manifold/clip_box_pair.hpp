@@ -5,6 +5,7 @@
 /// it after the separating axis test.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "mink/gjk/segment_cores.hpp"
@@ -52,8 +53,9 @@ void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
                        eb);
     const Vec3T<S> da = ea[1] - ea[0], db = eb[1] - eb[0];
     // Parallel edges clip against each other's end planes (rare: the separating axis test skips
-    // axes of nearly parallel edges); crossing ones touch at their closest points.
-    if (da.cross(db).norm() <= feature_tolerance * size * da.norm())
+    // axes of nearly parallel edges; the test is clip_features()'); crossing ones touch at their
+    // closest points.
+    if (da.cross(db).norm() <= feature_tolerance * size * std::max(da.norm(), db.norm()))
       clip_features(a, b, rel, n, feature_tolerance, min_depth, size, slack, out);
     if (out.count == 0) {
       // Already on the surfaces (pushed by the radii).

@@ -9,9 +9,11 @@
 #include <limits>
 #include <type_traits>
 
+#include "mink/gjk/distance.hpp"
 #include "mink/manifold/clip.hpp"
 #include "mink/manifold/feature.hpp"
 #include "mink/query/box_box.hpp"
+#include "mink/shapes/point.hpp"
 
 namespace mink::detail {
 
@@ -109,6 +111,31 @@ void clip_by_box_face(const Vec3T<S>& h, int k, S side, S w, const Vec3T<S>* inc
   }
 }
 
+/// The point where the line through x along `out` (unit, pointing out of `shape`) leaves the
+/// shape (at `pose`; both in A's frame), by conservative advancement: from a point on the support
+/// plane along `out`, each step moves along the line to the support plane of the closest point,
+/// which keeps it outside; exact in one step on a face, a few on a curved surface. Stops within
+/// the touching tolerance of distance() (1e-12 of the size), after 16 steps, or where the line
+/// runs almost along the surface (then the last point, off by at most the last distance).
+template <ConvexShape T>
+Vec3T<typename T::Scalar> exit_point_along(const T& shape, const PoseT<typename T::Scalar>& pose,
+                                           const Vec3T<typename T::Scalar>& x,
+                                           const Vec3T<typename T::Scalar>& out) {
+  using S = typename T::Scalar;
+  const Vec3T<S> top = pose.apply(support(shape, pose.inverse_rotate(out)));
+  Vec3T<S> at = x + std::max(S(0), out.dot(top - x)) * out;
+  for (int step = 0; step < 16; ++step) {
+    PoseT<S> point_pose;
+    point_pose.translation = at;
+    const DistanceResultT<S> d = distance(shape, pose, PointT<S>{}, point_pose);
+    if (d.status != Status::Separated) break;
+    const S along = d.normal.dot(out);
+    if (!(along > S(0.05))) break;
+    at -= (d.distance / along) * out;
+  }
+  return at;
+}
+
 /// Steps 2 and 3 of manifold.hpp's outline, in A's frame: `rel` is B's pose in A's frame, `n` the
 /// unit normal in A's frame, `min_depth` the least depth kept (negative: a gap), `slack` how far
 /// outside a side plane a point still counts as inside (unit: length; see kSideSlack).
@@ -121,13 +148,36 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
   SupportFeatureT<S> fa, fb;
   support_feature_of(a, n, feature_tolerance * a.bounding_radius(), fa);
   support_feature_of(b, rel.inverse_rotate(-n), feature_tolerance * b.bounding_radius(), fb);
+  // The radius moves a face along its own normal and a vertex along the contact normal. An
+  // edge tilted from the normal by t (within the tolerance) moves along the normal at its deeper
+  // end, whose rounded end is deepest there, and across the edge at its other end: both are then
+  // on the rounded surface, and the deepest point is exact. (Along the normal, the other end would
+  // be inside by radius * t^2 / 2.) Points clipped between the ends lie on the chord, inside by
+  // at most that.
+  auto push = [](SupportFeatureT<S>& f, const Vec3T<S>& toward, S radius) {
+    if (radius == S(0)) return;
+    if (f.count >= 3) {
+      for (int i = 0; i < f.count; ++i) f.points[i] += radius * f.normal;
+      return;
+    }
+    if (f.count == 2) {
+      const Vec3T<S> edge = f.points[1] - f.points[0];
+      const S edge_sq = edge.squaredNorm(), along = toward.dot(edge);
+      const Vec3T<S> across = toward - (edge_sq > S(0) ? along / edge_sq : S(0)) * edge;
+      const S length = across.norm();
+      if (length > S(0.5)) {
+        const int deeper = along >= S(0) ? 1 : 0;
+        f.points[deeper] += radius * toward;
+        f.points[1 - deeper] += (radius / length) * across;
+        return;
+      }
+    }
+    for (int i = 0; i < f.count; ++i) f.points[i] += radius * toward;
+  };
+  push(fa, n, a.core_radius());
+  push(fb, rel.inverse_rotate(-n), b.core_radius());
   fb.normal = rel.rotate(fb.normal);
-  // The radius moves a face along its own normal (exact: the rounded surface over a face is the
-  // face moved out) and an edge or a vertex along the contact normal.
-  const Vec3T<S> push_a = a.core_radius() * (fa.count >= 3 ? fa.normal : n);
-  const Vec3T<S> push_b = b.core_radius() * (fb.count >= 3 ? fb.normal : Vec3T<S>(-n));
-  for (int i = 0; i < fa.count; ++i) fa.points[i] += push_a;
-  for (int i = 0; i < fb.count; ++i) fb.points[i] = rel.apply(fb.points[i]) + push_b;
+  for (int i = 0; i < fb.count; ++i) fb.points[i] = rel.apply(fb.points[i]);
   out.count = 0;
 
   // The reference feature: a face (>= 3 points) with its plane (normal m, offset w) and side
@@ -155,13 +205,20 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
     m = ref->normal;
   } else if (fa.count == 2 && fb.count == 2) {
     const Vec3T<S> ea = fa.points[1] - fa.points[0], eb = fb.points[1] - fb.points[0];
-    const S la = ea.norm();
-    // Parallel when B's edge strays from A's line by at most the tolerance over its length.
-    if (!(la > S(0)) || ea.cross(eb).norm() > feature_tolerance * size * la) return;
-    ref_is_a = true;
-    ref = &fa;
-    inc = &fb;
-    m = n - n.dot(ea / la) * (ea / la);
+    const S la = ea.norm(), lb = eb.norm();
+    // Parallel when the shorter edge strays from the longer one's line by at most the tolerance
+    // over its length. The longer edge is the reference (A's on a tie), whichever shape is A, so
+    // that swapping the shapes keeps the points.
+    if (!(la > S(0) && lb > S(0)) ||
+        ea.cross(eb).norm() > feature_tolerance * size * std::max(la, lb))
+      return;
+    ref_is_a = la >= lb;
+    ref = ref_is_a ? &fa : &fb;
+    inc = ref_is_a ? &fb : &fa;
+    // m: out of the reference shape, across its edge.
+    const Vec3T<S> along = (ref_is_a ? ea / la : eb / lb);
+    const Vec3T<S> out_of_ref_shape = ref_is_a ? n : Vec3T<S>(-n);
+    m = out_of_ref_shape - out_of_ref_shape.dot(along) * along;
     if (!(m.norm() > S(0.5))) return;
     m.normalize();
   } else {
@@ -246,15 +303,46 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
         l.slack, buffer[1 - cur]);
     cur = 1 - cur;
   }
+  // A reference edge: how far a point is beside it, seen along the normal (unit: length).
+  S ex = S(0), ey = S(0), e0 = S(0), inv_e = S(0);
+  if (ref->count == 2) {
+    const Vec3T<S> edge = ref->points[1] - ref->points[0];
+    ex = u.dot(edge);
+    ey = v.dot(edge);
+    e0 = ex * v.dot(ref->points[0]) - ey * u.dot(ref->points[0]);
+    inv_e = S(1) / std::hypot(ex, ey);
+  }
+  auto beside = [&](const PlanarPoint<S>& p) { return (ex * p.y - ey * p.x - e0) * inv_e; };
+  const S on_edge = S(1e-12) * size;
+  if (ref->count == 2 && count == 2) {
+    // Skew edges: the depth along the incident edge peaks where it crosses the reference edge,
+    // seen along the normal. That deepest point of the contact is not among the clipped ends.
+    const S s0 = beside(buffer[cur][0]), s1 = beside(buffer[cur][1]);
+    if ((s0 > on_edge && s1 < -on_edge) || (s0 < -on_edge && s1 > on_edge)) {
+      const PlanarPoint<S>&p0 = buffer[cur][0], &p1 = buffer[cur][1];
+      const S t = s0 / (s0 - s1);
+      buffer[cur][count++] = {p0.x + t * (p1.x - p0.x), p0.y + t * (p1.y - p0.y),
+                              p0.depth + t * (p1.depth - p0.depth)};
+    }
+  }
   const S inv_mn = S(1) / mn;
   for (int i = 0; i < count; ++i) {
-    const PlanarPoint<S>& p = buffer[cur][i];
+    PlanarPoint<S> p = buffer[cur][i];
     if (!(p.depth >= min_depth)) continue;
     // Back to 3D: the point of the reference plane above (x, y) along n, and the incident point
     // `depth` below it.
     const Vec3T<S> in_plane = p.x * u + p.y * v;
-    const Vec3T<S> on_ref = in_plane + ((w - m.dot(in_plane)) * inv_mn) * n;
-    const Vec3T<S> on_inc = on_ref + (mn > S(0) ? -p.depth : p.depth) * n;
+    Vec3T<S> on_ref = in_plane + ((w - m.dot(in_plane)) * inv_mn) * n;
+    const Vec3T<S> on_inc = on_ref - p.depth * out_of_ref;
+    if (ref->count == 2 && std::abs(beside(p)) > on_edge) {
+      // The plane through a reference edge is its shape's surface only along the edge; beside
+      // it, the point would be off the surface and its depth wrong. It goes onto the surface
+      // along the normal instead.
+      on_ref = ref_is_a ? exit_point_along(a, PoseT<S>{}, on_ref, out_of_ref)
+                        : exit_point_along(b, rel, on_ref, out_of_ref);
+      p.depth = out_of_ref.dot(on_ref - on_inc);
+      if (!(p.depth >= min_depth)) continue;
+    }
     out.add(on_ref, on_inc, ref_is_a, p);
   }
 }

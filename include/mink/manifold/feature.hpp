@@ -208,9 +208,10 @@ template <class S>
 
 /// The points of the support feature `f` of a box with half extents h along d (box_feature_axes),
 /// taken to another frame by (rotation, translation) and pushed out by `radius`: a face along its
-/// outward normal, an edge or a vertex along `push` (unit, in the other frame; unused when the
-/// radius is 0). The order is support_feature()'s (a face counter-clockwise about its outward
-/// normal). Returns the count.
+/// outward normal, a vertex along `push` (unit, in the other frame; unused when the radius is 0),
+/// an edge along `push` at its deeper end and across the edge at the other (clip_features()). The
+/// order is support_feature()'s (a face counter-clockwise about its outward normal). Returns the
+/// count.
 template <class S>
 int box_feature_points(const Vec3T<S>& h, const Vec3T<S>& d, const BoxFeatureAxes& f,
                        const Mat3T<S>& rotation, const Vec3T<S>& translation, S radius,
@@ -236,9 +237,18 @@ int box_feature_points(const Vec3T<S>& h, const Vec3T<S>& d, const BoxFeatureAxe
     return 1;
   }
   const int free_axis = f.free[0] ? 0 : (f.free[1] ? 1 : 2);
-  const Vec3T<S> e = rotation.col(free_axis) * h[free_axis];
+  const Vec3T<S> axis = rotation.col(free_axis);
+  const Vec3T<S> e = axis * h[free_axis];
   out[0] = c - e;
   out[1] = c + e;
+  if (radius > S(0)) {
+    // As clip_features(): the deeper end along `push`, the other across the edge, so that both
+    // are on the rounded surface when the edge is tilted from `push`.
+    const S along = push.dot(axis);
+    const Vec3T<S> across = push - along * axis;
+    const S length = across.norm();
+    if (length > S(0.5)) out[along >= S(0) ? 0 : 1] += (radius / length) * across - radius * push;
+  }
   return 2;
 }
 

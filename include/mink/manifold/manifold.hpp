@@ -25,22 +25,29 @@
 ///     corners); incident = the other feature. The incident feature is clipped against the
 ///     reference face's side planes (Sutherland–Hodgman; the planes contain the normal), and each
 ///     clipped point gets its own depth: its distance along the normal to the reference face's
-///     plane. Parallel edges clip against each other's end planes (capsule on capsule: 2 points).
+///     plane. Parallel edges (to the tolerance) clip the shorter against the longer one's end
+///     planes (capsule on capsule: 2 points). Edges that are not exactly parallel also get the
+///     point where they cross, seen along the normal, the deepest one; and each point beside the
+///     reference edge is paired with the point of the reference shape straight along the normal
+///     (a ray cast by conservative advancement), since the plane through the edge is the shape's
+///     surface only along the edge.
 ///  4. Points whose depth is below -max(margin, touching tolerance) are dropped, the rest reduced
 ///     to at most four (clip.hpp): the deepest point, the point farthest from it, the largest
-///     triangle, the largest added area.
+///     triangle, the largest added area (points on a line: the deepest and both ends).
 ///  A vertex against anything, and two crossing edges, give one point: the contact's deepest (or
 ///  closest) points.
 ///
 /// Tolerances: a feature is a face or edge when its points are within
 /// `feature_tolerance * bounding_radius` of the support plane (feature.hpp); a generous value is
-/// harmless because clipped points keep their own depths, with one exception: a rounded face or
-/// edge (rounded box, capsule side) tilted from the normal by an angle t that the tolerance lets
-/// through is moved out by its radius r along the wrong direction, so its points are off the
-/// surface by about r t^2 / 2 (1e-7 of the size for t = 1e-3). Every point is on both surfaces to
-/// rounding for boxes and polytopes whose feature is a true face; cylinder and cone caps are
-/// polygons of 16 rim points, so points clipped against a cap (not the rim points themselves)
-/// are inside the disc by up to 2 % of its radius.
+/// harmless because clipped points keep their own depths. Points are on both surfaces to rounding
+/// for boxes and polytopes, and at the ends of rounded edges (capsules) and on rounded faces. A
+/// rounded edge tilted from the normal by an angle t that the tolerance lets through is moved out
+/// along the normal at its deeper end and across the edge at the other, so points clipped
+/// between its ends lie on the chord, inside the surface by at most r t^2 / 2. Cylinder and cone
+/// caps are polygons of 16 rim points, so points clipped against a cap (not the rim points
+/// themselves) are inside the disc by up to 2 % of its radius, and a face that overlaps a cap only
+/// between that polygon and the rim gets the contact's single deepest point (any point of that
+/// sliver, so swapping the shapes can move it).
 ///
 /// Cost: no allocation. A box pair is about the price of one separating axis test plus clipping;
 /// other pairs cost one contact() plus a scan of each polytope's points.

@@ -166,6 +166,18 @@ TEST(ContactBruteForce, NeedleAgainstDuplicatesSliverFace) {
   polytope_pair_case(405913, 5913, worst);
 }
 
+/// A flat set of 4 points against a needle of 5, penetrating by 2e-3 of the size, from a sweep 40
+/// times the default: A - B has a large flat facet nearest the origin, and EPA sampled it at points
+/// that made new faces slivers across the needle's width. Their normals, off by rounding over the
+/// sine of a 1e-8 angle, tilted one plane until the origin lay 1e-3 beyond it; P was no longer
+/// convex, and EPA cycled through the same support points until the cap (IterationLimit after 455
+/// support calls, with the right depth but an error bound of 5e-3). An expansion that makes such
+/// a face now takes the neighbour into the region: 5 support calls, the depth exact.
+TEST(ContactBruteForce, FlatAgainstNeedleSliverExpansion) {
+  oracle::DepthWorst worst("contact polytope-polytope (flat against needle)");
+  polytope_pair_case(606441, 206441, worst);
+}
+
 /// Needles 1e-8 thick (or thinner) against duplicate-point and round sets, from a sweep 30 times
 /// the default: the pairs touch or penetrate by 2e-12 to 2.5e-10 of the size, GJK crawls along
 /// the needle without enclosing the origin, and the answer is IterationLimit with a distance or
