@@ -136,48 +136,17 @@ Vec3T<typename T::Scalar> exit_point_along(const T& shape, const PoseT<typename 
   return at;
 }
 
-/// Steps 2 and 3 of manifold.hpp's outline, in A's frame: `rel` is B's pose in A's frame, `n` the
-/// unit normal in A's frame, `min_depth` the least depth kept (negative: a gap), `slack` how far
-/// outside a side plane a point still counts as inside (unit: length; see kSideSlack).
+/// Step 3 for the features fa of A and fb of B (pushed out by the radii, both in A's frame);
+/// clip_features()' arguments otherwise.
 template <ConvexShape A, ConvexShape B>
-void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
-                   const Vec3T<typename A::Scalar>& n, typename A::Scalar feature_tolerance,
-                   typename A::Scalar min_depth, typename A::Scalar size, typename A::Scalar slack,
-                   ClippedPoints<typename A::Scalar>& out) {
+void clip_feature_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
+                       const Vec3T<typename A::Scalar>& n,
+                       const SupportFeatureT<typename A::Scalar>& fa,
+                       const SupportFeatureT<typename A::Scalar>& fb,
+                       typename A::Scalar feature_tolerance, typename A::Scalar min_depth,
+                       typename A::Scalar size, typename A::Scalar slack,
+                       ClippedPoints<typename A::Scalar>& out) {
   using S = typename A::Scalar;
-  SupportFeatureT<S> fa, fb;
-  support_feature_of(a, n, feature_tolerance * a.bounding_radius(), fa);
-  support_feature_of(b, rel.inverse_rotate(-n), feature_tolerance * b.bounding_radius(), fb);
-  // The radius moves a face along its own normal and a vertex along the contact normal. An
-  // edge tilted from the normal by t (within the tolerance) moves along the normal at its deeper
-  // end, whose rounded end is deepest there, and across the edge at its other end: both are then
-  // on the rounded surface, and the deepest point is exact. (Along the normal, the other end would
-  // be inside by radius * t^2 / 2.) Points clipped between the ends lie on the chord, inside by
-  // at most that.
-  auto push = [](SupportFeatureT<S>& f, const Vec3T<S>& toward, S radius) {
-    if (radius == S(0)) return;
-    if (f.count >= 3) {
-      for (int i = 0; i < f.count; ++i) f.points[i] += radius * f.normal;
-      return;
-    }
-    if (f.count == 2) {
-      const Vec3T<S> edge = f.points[1] - f.points[0];
-      const S edge_sq = edge.squaredNorm(), along = toward.dot(edge);
-      const Vec3T<S> across = toward - (edge_sq > S(0) ? along / edge_sq : S(0)) * edge;
-      const S length = across.norm();
-      if (length > S(0.5)) {
-        const int deeper = along >= S(0) ? 1 : 0;
-        f.points[deeper] += radius * toward;
-        f.points[1 - deeper] += (radius / length) * across;
-        return;
-      }
-    }
-    for (int i = 0; i < f.count; ++i) f.points[i] += radius * toward;
-  };
-  push(fa, n, a.core_radius());
-  push(fb, rel.inverse_rotate(-n), b.core_radius());
-  fb.normal = rel.rotate(fb.normal);
-  for (int i = 0; i < fb.count; ++i) fb.points[i] = rel.apply(fb.points[i]);
   out.count = 0;
 
   // The reference feature: a face (>= 3 points) with its plane (normal m, offset w) and side
@@ -345,6 +314,107 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
     }
     out.add(on_ref, on_inc, ref_is_a, p);
   }
+}
+
+/// Adds to `out` the points where the edges of `other` (a polygon or an edge, seen along n) cross
+/// the rim of the cap `disc` (a feature with a disc_radius), both in A's frame: points of the
+/// contact patch's boundary exactly on both surfaces, where the clipped rim polygon falls short
+/// of the circle by up to 2 % of its radius (and misses a patch that lies only in that band).
+/// Each is paired with the point of `other` straight along n, and kept when its depth is at least
+/// min_depth. The planar coordinates of every point in `out` are then taken across n, one frame
+/// for the points of both sources.
+template <class S>
+void add_rim_crossings(const SupportFeatureT<S>& disc, const SupportFeatureT<S>& other,
+                       bool disc_is_a, const Vec3T<S>& n, S min_depth, ClippedPoints<S>& out) {
+  const Vec3T<S>& m = disc.normal;
+  const S mn = m.dot(n);
+  if (!(std::abs(mn) > S(0.5)) || other.count < 2) return;
+  // The other feature's points moved along n into the disc's plane: o + shift n.
+  const S plane = m.dot(disc.disc_centre);
+  Vec3T<S> moved[kMaxFeaturePoints];
+  S shift[kMaxFeaturePoints];
+  for (int i = 0; i < other.count; ++i) {
+    shift[i] = (plane - m.dot(other.points[i])) / mn;
+    moved[i] = other.points[i] + shift[i] * n;
+  }
+  const S r_sq = disc.disc_radius * disc.disc_radius;
+  const int edges = other.count == 2 ? 1 : other.count;
+  for (int i = 0; i < edges; ++i) {
+    const int j = i + 1 == other.count ? 0 : i + 1;
+    // |p + t e - c|^2 = r^2 for t in [0, 1]; the roots from the stable form of the quadratic.
+    const Vec3T<S> e = moved[j] - moved[i], f = moved[i] - disc.disc_centre;
+    const S ee = e.squaredNorm(), ef = e.dot(f), ff_r = f.squaredNorm() - r_sq;
+    const S disc_sq = ef * ef - ee * ff_r;
+    if (!(ee > S(0)) || !(disc_sq >= S(0))) continue;
+    const S q = -(ef + std::copysign(std::sqrt(disc_sq), ef));
+    const S roots[2] = {q / ee, q != S(0) ? ff_r / q : S(0)};
+    for (const S t : roots) {
+      if (!(t >= S(0) && t <= S(1)) || out.count >= kMaxClipPoints) continue;
+      const Vec3T<S> on_disc = moved[i] + t * e;
+      const S s = shift[i] + t * (shift[j] - shift[i]);
+      const S depth = disc_is_a ? s : -s;
+      if (!(depth >= min_depth)) continue;
+      out.add(on_disc, on_disc - s * n, disc_is_a, PlanarPoint<S>{S(0), S(0), depth});
+    }
+  }
+  Vec3T<S> u, v;
+  plane_basis(n, u, v);
+  for (int i = 0; i < out.count; ++i) {
+    out.planar[i].x = u.dot(out.on_a[i]);
+    out.planar[i].y = v.dot(out.on_a[i]);
+  }
+}
+
+/// Steps 2 and 3 of manifold.hpp's outline, in A's frame: `rel` is B's pose in A's frame, `n` the
+/// unit normal in A's frame, `min_depth` the least depth kept (negative: a gap), `slack` how far
+/// outside a side plane a point still counts as inside (unit: length; see kSideSlack).
+template <ConvexShape A, ConvexShape B>
+void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
+                   const Vec3T<typename A::Scalar>& n, typename A::Scalar feature_tolerance,
+                   typename A::Scalar min_depth, typename A::Scalar size, typename A::Scalar slack,
+                   ClippedPoints<typename A::Scalar>& out) {
+  using S = typename A::Scalar;
+  SupportFeatureT<S> fa, fb;
+  support_feature_of(a, n, feature_tolerance * a.bounding_radius(), fa);
+  support_feature_of(b, rel.inverse_rotate(-n), feature_tolerance * b.bounding_radius(), fb);
+  // The radius moves a face along its own normal and a vertex along the contact normal. An
+  // edge tilted from the normal by t (within the tolerance) moves along the normal at its deeper
+  // end, whose rounded end is deepest there, and across the edge at its other end: both are then
+  // on the rounded surface, and the deepest point is exact. (Along the normal, the other end would
+  // be inside by radius * t^2 / 2.) Points clipped between the ends lie on the chord, inside by
+  // at most that.
+  auto push = [](SupportFeatureT<S>& f, const Vec3T<S>& toward, S radius) {
+    if (radius == S(0)) return;
+    if (f.count >= 3) {
+      for (int i = 0; i < f.count; ++i) f.points[i] += radius * f.normal;
+      f.disc_centre += radius * f.normal;
+      return;
+    }
+    if (f.count == 2) {
+      const Vec3T<S> edge = f.points[1] - f.points[0];
+      const S edge_sq = edge.squaredNorm(), along = toward.dot(edge);
+      const Vec3T<S> across = toward - (edge_sq > S(0) ? along / edge_sq : S(0)) * edge;
+      const S length = across.norm();
+      if (length > S(0.5)) {
+        const int deeper = along >= S(0) ? 1 : 0;
+        f.points[deeper] += radius * toward;
+        f.points[1 - deeper] += (radius / length) * across;
+        return;
+      }
+    }
+    for (int i = 0; i < f.count; ++i) f.points[i] += radius * toward;
+  };
+  push(fa, n, a.core_radius());
+  push(fb, rel.inverse_rotate(-n), b.core_radius());
+  fb.normal = rel.rotate(fb.normal);
+  for (int i = 0; i < fb.count; ++i) fb.points[i] = rel.apply(fb.points[i]);
+  if (fb.disc_radius > S(0)) fb.disc_centre = rel.apply(fb.disc_centre);
+  clip_feature_pair(a, b, rel, n, fa, fb, feature_tolerance, min_depth, size, slack, out);
+  // A cap against a polygon or an edge: the clipped rim polygon stops short of the rim.
+  if (fa.disc_radius > S(0) && fb.disc_radius == S(0))
+    add_rim_crossings(fa, fb, true, n, min_depth, out);
+  else if (fb.disc_radius > S(0) && fa.disc_radius == S(0))
+    add_rim_crossings(fb, fa, false, n, min_depth, out);
 }
 
 }  // namespace mink::detail

@@ -51,15 +51,22 @@ struct SupportFeatureT {
   int count = 0;                        ///< 1, 2 or 3..kMaxFeaturePoints
   Vec3T<S> normal = Vec3T<S>::UnitZ();  ///< polygons: unit outward face normal; else unused
   Vec3T<S> points[kMaxFeaturePoints];   ///< (unit: length)
+  /// A cylinder's or cone's cap: the points are a polygon on its rim, and the rim itself is the
+  /// circle of this radius about disc_centre in the face's plane (the manifold adds the points
+  /// where the other feature's edges cross it). 0 for every other feature. (unit: length)
+  S disc_radius = S(0);
+  Vec3T<S> disc_centre = Vec3T<S>::Zero();
 
   void set_point(const Vec3T<S>& p) {
     count = 1;
     points[0] = p;
+    disc_radius = S(0);
   }
   void set_edge(const Vec3T<S>& p, const Vec3T<S>& q) {
     count = 2;
     points[0] = p;
     points[1] = q;
+    disc_radius = S(0);
   }
 };
 
@@ -121,6 +128,7 @@ void feature_from_points(Vec3T<S>* points, int count, const Vec3T<S>& n, Support
   // More corners than a feature holds: an evenly spread subset (it stays convex).
   const int kept = std::min(n_hull, kMaxFeaturePoints);
   out.count = kept;
+  out.disc_radius = S(0);
   for (int j = 0; j < kept; ++j) out.points[j] = points[hull[(j * n_hull) / kept].i];
   Vec3T<S> normal = Vec3T<S>::Zero();
   for (int j = 0; j < kept; ++j) {
@@ -136,6 +144,8 @@ void feature_from_points(Vec3T<S>* points, int count, const Vec3T<S>& n, Support
 template <class S>
 void rim_feature(S radius, S z, S z_normal, SupportFeatureT<S>& out) {
   out.count = kMaxFeaturePoints;
+  out.disc_radius = radius;
+  out.disc_centre = {S(0), S(0), z};
   out.normal = Vec3T<S>(S(0), S(0), z_normal >= S(0) ? S(1) : S(-1));
   for (int i = 0; i < kMaxFeaturePoints; ++i) {
     const S angle = S(2) * std::numbers::pi_v<S> * S(i) / S(kMaxFeaturePoints);
@@ -261,6 +271,7 @@ void support_feature(const BoxT<S>& box, const Vec3T<S>& d, S tolerance, Support
   out.count = detail::box_feature_points(box.half_extents, d, f, Mat3T<S>::Identity().eval(),
                                          Vec3T<S>::Zero().eval(), S(0), Vec3T<S>::Zero().eval(),
                                          out.points);
+  out.disc_radius = S(0);
   if (f.face_axis >= 0)
     out.normal = Vec3T<S>::Unit(f.face_axis) * detail::sign_nonneg(d[f.face_axis]);
 }
@@ -436,6 +447,7 @@ void support_feature(const ConvexHullShapeT<S>& hull, const Vec3T<S>& d, S toler
     if (near) {
       const int corners = int(loop.size());
       out.count = std::min(corners, kMaxFeaturePoints);
+      out.disc_radius = S(0);
       for (int j = 0; j < out.count; ++j)
         out.points[j] = hull.point(loop[std::size_t((j * corners) / out.count)]);
       out.normal = hull.face_normal(best_face);

@@ -44,10 +44,11 @@
 /// rounded edge tilted from the normal by an angle t that the tolerance lets through is moved out
 /// along the normal at its deeper end and across the edge at the other, so points clipped
 /// between its ends lie on the chord, inside the surface by at most r t^2 / 2. Cylinder and cone
-/// caps are polygons of 16 rim points, so points clipped against a cap (not the rim points
-/// themselves) are inside the disc by up to 2 % of its radius, and a face that overlaps a cap only
-/// between that polygon and the rim gets the contact's single deepest point (any point of that
-/// sliver, so swapping the shapes can move it).
+/// caps are polygons of 16 rim points, to which the points where the other feature's edges cross
+/// the rim itself are added (exact, on both surfaces), so the patch reaches the rim even where it
+/// lies only between that polygon and the rim; points where the polygon's own sides are clipped
+/// lie on the cap up to 2 % of its radius inside the rim. Two caps against each other (cylinder
+/// on cylinder) use the polygons alone.
 ///
 /// Cost: no allocation. A box pair is about the price of one separating axis test plus clipping;
 /// other pairs cost one contact() plus a scan of each polytope's points.

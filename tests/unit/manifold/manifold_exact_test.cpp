@@ -290,6 +290,65 @@ TEST(ManifoldExact, CylinderStandingOnBoxGivesRimPoints) {
   }
 }
 
+/// A cylinder standing on a box over its edge x = 4: the contact patch is the part of the bottom
+/// disc over the box, cut by that edge. Its ends on the rim, where the edge line crosses the
+/// circle at y = c_y +- sqrt(r^2 - (4 - c_x)^2), are points of the manifold, exactly on both
+/// surfaces (the rim polygon of 16 points falls short of them). Half the cases overhang so far
+/// that only a band narrower than that polygon's gap to the circle (1.9 % of the radius) is over
+/// the box: the two crossings are then the manifold (before, one EPA point anywhere in the band,
+/// different when A and B were swapped).
+TEST(ManifoldExact, CylinderOverhangingBoxEdgeHasTheRimCrossings) {
+  for (int k = 0; k < 200; ++k) {
+    const std::uint64_t seed = 605000 + k;
+    Rng rng(seed);
+    const Scene scene = random_scene(rng);
+    const mink::Box table{{4, 4, 0.5}};
+    const mink::Cylinder cylinder{rng.uniform(0.1, 1), rng.uniform(0.1, 1)};
+    const double r = cylinder.radius;
+    // How far the disc reaches over the edge; the overlap less than that, or the least push
+    // would be sideways, off the edge.
+    const double width = k % 2 ? r * rng.uniform(1e-3, 0.018) : r * rng.uniform(0.05, 1.9);
+    const double overlap = rng.log_uniform(1e-6, 0.5 * std::min(0.04, width));
+    const Vec3 centre(4 + r - width, rng.uniform(-2, 2), 0.5 + cylinder.half_height - overlap);
+    const Pose pt = scene.place(Vec3::Zero(), Quat::Identity());
+    const Pose pc = scene.place(centre, about_z(rng.uniform(0, 7)));
+    const double half_chord = std::sqrt(r * r - (4 - centre.x()) * (4 - centre.x()));
+    std::vector<Vec3> crossings;  // on the table's top face
+    for (double side : {-1.0, 1.0})
+      crossings.push_back(scene.frame.apply(Vec3(4, centre.y() + side * half_chord, 0.5)));
+    const Vec3 bottom_centre = scene.frame.apply(centre - Vec3(0, 0, cylinder.half_height));
+    for (int swap = 0; swap < 2; ++swap) {
+      const ManifoldResult m =
+          swap ? mink::manifold(cylinder, pc, table, pt) : mink::manifold(table, pt, cylinder, pc);
+      const std::string note = oracle::seed_note(seed) + (swap ? " swapped" : "");
+      ASSERT_EQ(m.status, mink::Status::Intersecting) << note;
+      EXPECT_LE((m.normal - (swap ? -1.0 : 1.0) * scene.up()).norm(), 1e-12) << note;
+      ASSERT_GE(m.count, 2) << note;
+      for (int i = 0; i < m.count; ++i) {
+        const Vec3 on_table = swap ? m.points[i].point_b : m.points[i].point_a;
+        const Vec3 on_cylinder = swap ? m.points[i].point_a : m.points[i].point_b;
+        EXPECT_NEAR(m.points[i].depth, overlap, 1e-12) << note;
+        // On the table's top face, and in the cylinder's bottom disc.
+        const Vec3 t = scene.frame.inverse_apply(on_table);
+        EXPECT_NEAR(t.z(), 0.5, 1e-12) << note;
+        EXPECT_LE(t.x(), 4 + 1e-12) << note;
+        const Vec3 offset = on_cylinder - bottom_centre;
+        EXPECT_NEAR(offset.dot(scene.up()), 0, 1e-12) << note;
+        EXPECT_LE(offset.norm(), r + 1e-12) << note;
+      }
+      // In the band the crossings are the patch's far ends, which the reduction to four keeps;
+      // over a wider patch it may keep other rim points instead.
+      if (k % 2 == 0) continue;
+      for (const Vec3& c : crossings) {
+        bool found = false;
+        for (int i = 0; i < m.count; ++i)
+          found = found || ((swap ? m.points[i].point_b : m.points[i].point_a) - c).norm() <= 1e-12;
+        EXPECT_TRUE(found) << note << ": no point at the rim crossing " << c.transpose();
+      }
+    }
+  }
+}
+
 TEST(ManifoldExact, FlatConeApexDownOnBoxGivesRimPoints) {
   // A cone of height 1e-15 of its radius is a disk: lying apex down on the table, its rim
   // describes the contact, as for a cylinder (a side line would give 2 points of a disk).
