@@ -301,6 +301,16 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
   const int wi = static_cast<int>(ws.vertices.size());
   ws.vertices.push_back(w);
   ws.forced.clear();
+  // `face` is the nearest: when the origin is below it, it is inside P (every face's signed
+  // distance is at least this one's), unless rounding has already bent P. Not so when the cores
+  // only touch or are just apart and EPA decides (contact.hpp): the origin may then lie outside P,
+  // and faces of needles 1e-7 thick are bent by rounding at 1e-10 of the size. So only an origin
+  // deeper than 1e-7 of the size counts as held.
+  const S held_depth = S(1e-7) * size;
+  const S nearest_offset = ws.faces[face].offset;
+  const bool holds_origin =
+      nearest_offset > S(0) &&
+      nearest_offset * nearest_offset > held_depth * held_depth * ws.faces[face].nn;
   bool valid = false;
   for (int attempt = 0; attempt < kMaxExpansionAttempts; ++attempt) {
     ws.removed.clear();
@@ -353,7 +363,7 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
       // the new face folds back over g, and P would turn inside out there.
       const S above = created.n.dot(ws.vertices[far].w) - created.offset;
       const bool off_plane = above * above > flat_tol * flat_tol * created.nn;
-      // And the origin below the new face: P only grows and held the origin, so a face with the
+      // And the origin below the new face, when P holds it: P only grows, so a face with the
       // origin beyond it by more than rounding says that P has stopped being convex (w nearly in
       // the plane of a large flat facet of A - B, sampled again and again, made new faces over a
       // horizon that folds). The neighbour joins the region, and the fan is built over a wider
@@ -361,7 +371,7 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
       // sine of its angle (1e-8 across a needle's width), which moves the plane at the origin by
       // eps size / sine, i.e. eps size |e1| |e2| / |n|.
       auto beyond_rounding = [&] {
-        if (!(created.offset < S(0)) ||
+        if (!holds_origin || !(created.offset < S(0)) ||
             !(created.offset * created.offset > flat_tol * flat_tol * created.nn))
           return false;
         const Vec3T<S>& w0 = ws.vertices[created.v[0]].w;

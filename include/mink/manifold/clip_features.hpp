@@ -111,29 +111,36 @@ void clip_by_box_face(const Vec3T<S>& h, int k, S side, S w, const Vec3T<S>* inc
   }
 }
 
-/// The point where the line through x along `out` (unit, pointing out of `shape`) leaves the
-/// shape (at `pose`; both in A's frame), by conservative advancement: from a point on the support
-/// plane along `out`, each step moves along the line to the support plane of the closest point,
-/// which keeps it outside; exact in one step on a face, a few on a curved surface. Stops within
-/// the touching tolerance of distance() (1e-12 of the size), after 16 steps, or where the line
-/// runs almost along the surface (then the last point, off by at most the last distance).
+/// Moves `at`, a point on the line through it along `out` (unit, pointing out of `shape`), to
+/// where that line leaves the shape (at `pose`; both in A's frame), by conservative advancement:
+/// from a point on the support plane along `out`, each step moves along the line to the support
+/// plane of the closest point, which keeps it outside; exact in one step on a face, a few on a
+/// curved surface. Returns whether the walk ended touching the shape, within 1e-9 of its bounding
+/// radius (the default 1e-12 costs GJK on a curved core twice the support calls, and points on
+/// a curved surface are only as good as the contact normal, 1e-6 of the size off for a
+/// cylinder); false when the line misses the shape or runs almost along its surface, or after 16
+/// steps.
 template <ConvexShape T>
-Vec3T<typename T::Scalar> exit_point_along(const T& shape, const PoseT<typename T::Scalar>& pose,
-                                           const Vec3T<typename T::Scalar>& x,
-                                           const Vec3T<typename T::Scalar>& out) {
+bool exit_point_along(const T& shape, const PoseT<typename T::Scalar>& pose,
+                      const Vec3T<typename T::Scalar>& out, Vec3T<typename T::Scalar>& at) {
   using S = typename T::Scalar;
+  TolerancesT<S> tolerances;
+  tolerances.relative = std::max(tolerances.relative, S(1e-9));
+  tolerances.max_iterations = 64;
   const Vec3T<S> top = pose.apply(support(shape, pose.inverse_rotate(out)));
-  Vec3T<S> at = x + std::max(S(0), out.dot(top - x)) * out;
+  at += std::max(S(0), out.dot(top - at)) * out;
   for (int step = 0; step < 16; ++step) {
     PoseT<S> point_pose;
     point_pose.translation = at;
-    const DistanceResultT<S> d = distance(shape, pose, PointT<S>{}, point_pose);
-    if (d.status != Status::Separated) break;
+    const DistanceResultT<S> d = distance(shape, pose, PointT<S>{}, point_pose, tolerances);
+    if (d.status == Status::Intersecting) return true;
+    // A capped GJK still gives its best estimate to step with.
+    if (d.status != Status::Separated && d.status != Status::IterationLimit) return false;
     const S along = d.normal.dot(out);
-    if (!(along > S(0.05))) break;
+    if (!(along > S(0.05)) || !(d.distance > S(0))) return false;
     at -= (d.distance / along) * out;
   }
-  return at;
+  return false;
 }
 
 /// Step 3 for the features fa of A and fb of B (pushed out by the radii, both in A's frame);
@@ -282,10 +289,11 @@ void clip_feature_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& 
     inv_e = S(1) / std::hypot(ex, ey);
   }
   auto beside = [&](const PlanarPoint<S>& p) { return (ex * p.y - ey * p.x - e0) * inv_e; };
-  const S on_edge = S(1e-12) * size;
+  const S on_edge = std::max(S(1e-12), S(64) * std::numeric_limits<S>::epsilon()) * size;
   if (ref->count == 2 && count == 2) {
-    // Skew edges: the depth along the incident edge peaks where it crosses the reference edge,
-    // seen along the normal. That deepest point of the contact is not among the clipped ends.
+    // Skew edges: the contact is deepest where the incident edge crosses the reference edge,
+    // seen along the normal (beside the reference edge, the points moved onto its shape below
+    // lose depth on both sides). That point is not among the clipped ends.
     const S s0 = beside(buffer[cur][0]), s1 = beside(buffer[cur][1]);
     if ((s0 > on_edge && s1 < -on_edge) || (s0 < -on_edge && s1 > on_edge)) {
       const PlanarPoint<S>&p0 = buffer[cur][0], &p1 = buffer[cur][1];
@@ -307,8 +315,11 @@ void clip_feature_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& 
       // The plane through a reference edge is its shape's surface only along the edge; beside
       // it, the point would be off the surface and its depth wrong. It goes onto the surface
       // along the normal instead.
-      on_ref = ref_is_a ? exit_point_along(a, PoseT<S>{}, on_ref, out_of_ref)
-                        : exit_point_along(b, rel, on_ref, out_of_ref);
+      // A line that misses the shape (a thin one, or a point far beside it) has no such point:
+      // the point is dropped.
+      const bool on_surface = ref_is_a ? exit_point_along(a, PoseT<S>{}, out_of_ref, on_ref)
+                                       : exit_point_along(b, rel, out_of_ref, on_ref);
+      if (!on_surface) continue;
       p.depth = out_of_ref.dot(on_ref - on_inc);
       if (!(p.depth >= min_depth)) continue;
     }

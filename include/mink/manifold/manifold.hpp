@@ -51,7 +51,10 @@
 /// on cylinder) use the polygons alone.
 ///
 /// Cost: no allocation. A box pair is about the price of one separating axis test plus clipping;
-/// other pairs cost one contact() plus a scan of each polytope's points.
+/// other pairs cost one contact() plus a scan of each polytope's points. Skew edges add one or
+/// two distance() calls of a point per point beside the reference edge: little on boxes and
+/// polytopes, several microseconds on a cylinder's or cone's side (a cylinder across a box's
+/// edge: 3.4 us before, 6 to 12 us with them).
 #pragma once
 
 #include <array>
