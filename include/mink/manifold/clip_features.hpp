@@ -252,6 +252,7 @@ void clip_feature_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& 
   };
   Line lines[kMaxFeaturePoints];
   int line_count = 0;
+  S ex = S(0), ey = S(0);  // a reference edge, seen along the normal
   auto add_line = [&](S nx, S ny, const Vec3T<S>& through) {
     lines[line_count++] = {nx, ny, nx * u.dot(through) + ny * v.dot(through),
                            slack * std::sqrt(nx * nx + ny * ny)};
@@ -268,7 +269,8 @@ void clip_feature_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& 
   } else {
     // Between the planes through the edge's ends, across the edge.
     const Vec3T<S> edge = ref->points[1] - ref->points[0];
-    const S ex = u.dot(edge), ey = v.dot(edge);
+    ex = u.dot(edge);
+    ey = v.dot(edge);
     add_line(ex, ey, ref->points[0]);
     add_line(-ex, -ey, ref->points[1]);
   }
@@ -280,11 +282,8 @@ void clip_feature_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& 
     cur = 1 - cur;
   }
   // A reference edge: how far a point is beside it, seen along the normal (unit: length).
-  S ex = S(0), ey = S(0), e0 = S(0), inv_e = S(0);
+  S e0 = S(0), inv_e = S(0);
   if (ref->count == 2) {
-    const Vec3T<S> edge = ref->points[1] - ref->points[0];
-    ex = u.dot(edge);
-    ey = v.dot(edge);
     e0 = ex * v.dot(ref->points[0]) - ey * u.dot(ref->points[0]);
     inv_e = S(1) / std::hypot(ex, ey);
   }
@@ -402,18 +401,10 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
       return;
     }
     if (f.count == 2) {
-      const Vec3T<S> edge = f.points[1] - f.points[0];
-      const S edge_sq = edge.squaredNorm(), along = toward.dot(edge);
-      const Vec3T<S> across = toward - (edge_sq > S(0) ? along / edge_sq : S(0)) * edge;
-      const S length = across.norm();
-      if (length > S(0.5)) {
-        const int deeper = along >= S(0) ? 1 : 0;
-        f.points[deeper] += radius * toward;
-        f.points[1 - deeper] += (radius / length) * across;
-        return;
-      }
+      push_rounded_edge(f.points[0], f.points[1], toward, radius);
+      return;
     }
-    for (int i = 0; i < f.count; ++i) f.points[i] += radius * toward;
+    f.points[0] += radius * toward;
   };
   push(fa, n, a.core_radius());
   push(fb, rel.inverse_rotate(-n), b.core_radius());

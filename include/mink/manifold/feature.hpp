@@ -216,6 +216,23 @@ template <class S>
   return f;
 }
 
+/// Pushes the edge (p0, p1) of a core out by `radius` onto its rounded surface, towards `toward`
+/// (unit): the deeper end along `toward`, where the rounded end is deepest, and the other end
+/// across the edge, so that both are on the surface when the edge is tilted from `toward` by t
+/// (along it, the other end would be inside by radius t^2 / 2). An edge more along `toward` than
+/// across it moves along `toward` at both ends.
+template <class S>
+void push_rounded_edge(Vec3T<S>& p0, Vec3T<S>& p1, const Vec3T<S>& toward, S radius) {
+  const Vec3T<S> edge = p1 - p0;
+  const S edge_sq = edge.squaredNorm(), along = toward.dot(edge);
+  const Vec3T<S> across = toward - (edge_sq > S(0) ? along / edge_sq : S(0)) * edge;
+  const S length = across.norm();
+  Vec3T<S>& deeper = along >= S(0) ? p1 : p0;
+  Vec3T<S>& other = along >= S(0) ? p0 : p1;
+  deeper += radius * toward;
+  other += length > S(0.5) ? Vec3T<S>((radius / length) * across) : Vec3T<S>(radius * toward);
+}
+
 /// The points of the support feature `f` of a box with half extents h along d (box_feature_axes),
 /// taken to another frame by (rotation, translation) and pushed out by `radius`: a face along its
 /// outward normal, a vertex along `push` (unit, in the other frame; unused when the radius is 0),
@@ -241,24 +258,16 @@ int box_feature_points(const Vec3T<S>& h, const Vec3T<S>& d, const BoxFeatureAxe
   }
   Vec3T<S> corner;  // the free axis (an edge's) at 0
   for (int i = 0; i < 3; ++i) corner[i] = f.free[i] ? S(0) : sign_nonneg(d[i]) * h[i];
-  const Vec3T<S> c = rotation * corner + translation + radius * push;
+  const Vec3T<S> c = rotation * corner + translation;
   if (f.free_count == 0) {
-    out[0] = c;
+    out[0] = c + radius * push;
     return 1;
   }
   const int free_axis = f.free[0] ? 0 : (f.free[1] ? 1 : 2);
-  const Vec3T<S> axis = rotation.col(free_axis);
-  const Vec3T<S> e = axis * h[free_axis];
+  const Vec3T<S> e = rotation.col(free_axis) * h[free_axis];
   out[0] = c - e;
   out[1] = c + e;
-  if (radius > S(0)) {
-    // As clip_features(): the deeper end along `push`, the other across the edge, so that both
-    // are on the rounded surface when the edge is tilted from `push`.
-    const S along = push.dot(axis);
-    const Vec3T<S> across = push - along * axis;
-    const S length = across.norm();
-    if (length > S(0.5)) out[along >= S(0) ? 0 : 1] += (radius / length) * across - radius * push;
-  }
+  if (radius > S(0)) push_rounded_edge(out[0], out[1], push, radius);
   return 2;
 }
 
