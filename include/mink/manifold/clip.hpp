@@ -71,7 +71,7 @@ int clip_by_line(const PlanarPoint<S>* in, int count, Height&& height, S slack,
 /// makes the choice depend on the order of the points (fixed by the shapes' local frames) instead
 /// of on rounding: the same points survive a rigid motion of both shapes and tiny perturbations.
 template <class S, class Value>
-int first_near_max(int count, S floor, S slack, Value&& value) {
+[[gnu::always_inline]] inline int first_near_max(int count, S floor, S slack, Value&& value) {
   S values[kMaxClipPoints];
   S best = floor;
   for (int i = 0; i < count; ++i) best = std::max(best, values[i] = value(i));

@@ -55,7 +55,9 @@ void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
     // Parallel edges clip against each other's end planes (rare: the separating axis test skips
     // axes of nearly parallel edges; the test is clip_features()'); crossing ones touch at their
     // closest points.
-    if (da.cross(db).norm() <= feature_tolerance * size * std::max(da.norm(), db.norm()))
+    // Compared squared: three square roots cost a tenth of the query.
+    const S limit = feature_tolerance * size;
+    if (da.cross(db).squaredNorm() <= limit * limit * std::max(da.squaredNorm(), db.squaredNorm()))
       clip_features(a, b, rel, n, feature_tolerance, min_depth, size, slack, out);
     if (out.count == 0) {
       // Already on the surfaces (pushed by the radii).

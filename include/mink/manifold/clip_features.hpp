@@ -98,15 +98,21 @@ void clip_by_box_face(const Vec3T<S>& h, int k, S side, S w, const Vec3T<S>* inc
   if (max_x > hu + slack) clip([hu](const P& p) { return hu - p.x; });
   // Back to 3D in A's frame: the point of the face above (x, y), and the incident point `depth`
   // below it along n.
-  const Vec3T<S> n_in_a = to_a ? to_a->rotate(n) : n;
+  // The face's point above (x, y) is origin + x x_axis + y y_axis, all three taken to A's frame
+  // once (a vector written coordinate by coordinate and read whole would stall on store
+  // forwarding).
+  Vec3T<S> origin = Vec3T<S>::Unit(k) * (side * w), x_axis = Vec3T<S>::Unit(iu),
+           y_axis = Vec3T<S>::Unit(iv) * side, n_in_a = n;
+  if (to_a) {
+    origin = to_a->apply(origin);
+    x_axis = to_a->rotation.col(iu);
+    y_axis = to_a->rotation.col(iv) * side;
+    n_in_a = to_a->rotate(n);
+  }
   for (int i = 0; i < count; ++i) {
     const PlanarPoint<S>& p = buffer[cur][i];
     if (!(p.depth >= min_depth)) continue;
-    Vec3T<S> on_ref;
-    on_ref[iu] = p.x;
-    on_ref[iv] = side * p.y;
-    on_ref[k] = side * w;
-    if (to_a) on_ref = to_a->apply(on_ref);
+    const Vec3T<S> on_ref = origin + p.x * x_axis + p.y * y_axis;
     out.add(on_ref, on_ref - p.depth * n_in_a, ref_is_a, p);
   }
 }

@@ -186,32 +186,37 @@ namespace detail {
 /// radius (1 - cos t) <= limit / |d| for the tilt t: a core 3.6e-15 thick passes the flatness test
 /// at any tilt, and is then the edge along its least tilted free axis.
 struct BoxFeatureAxes {
-  bool free[3];
-  int free_count;  ///< 0 a vertex, 1 an edge, 2 or 3 a face
-  int face_axis;   ///< the face's normal axis when free_count >= 2, else -1
+  unsigned free_mask;  ///< bit i set: axis i is free
+  int free_count;      ///< 0 a vertex, 1 an edge, 2 or 3 a face
+  int face_axis;       ///< the face's normal axis when free_count >= 2, else -1
+
+  bool free(int i) const { return (free_mask >> i) & 1u; }
 };
 
+// Plain scalars throughout, no array of flags: an array written flag by flag and then copied as a
+// whole stalls the copy's wide load on store forwarding (a fifth of a box-box manifold's time).
 template <class S>
 [[gnu::always_inline]] inline BoxFeatureAxes box_feature_axes(const Vec3T<S>& h, const Vec3T<S>& d,
                                                               S limit, S radius = S(0)) {
-  BoxFeatureAxes f;
-  for (int i = 0; i < 3; ++i) f.free[i] = h[i] > S(0) && S(2) * h[i] * std::abs(d[i]) <= limit;
-  auto classify = [&f, &d] {
-    f.free_count = f.free[0] + f.free[1] + f.free[2];
-    f.face_axis = f.free_count == 3   ? dominant_axis(d)
-                  : f.free_count == 2 ? (!f.free[0] ? 0 : (!f.free[1] ? 1 : 2))
-                                      : -1;
+  unsigned mask = 0;
+  for (int i = 0; i < 3; ++i)
+    mask |= unsigned(h[i] > S(0) && S(2) * h[i] * std::abs(d[i]) <= limit) << i;
+  auto classify = [&d](unsigned m) {
+    const int count = int(m & 1u) + int((m >> 1) & 1u) + int((m >> 2) & 1u);
+    const int face = count == 3   ? dominant_axis(d)
+                     : count == 2 ? (!(m & 1u) ? 0 : (!(m & 2u) ? 1 : 2))
+                                  : -1;
+    return BoxFeatureAxes{m, count, face};
   };
-  classify();
+  const BoxFeatureAxes f = classify(mask);
   if (radius > S(0) && f.face_axis >= 0 && radius * (d.norm() - std::abs(d[f.face_axis])) > limit)
       [[unlikely]] {
     // The edge along the free axis least tilted against d.
     int along = -1;
     for (int i = 0; i < 3; ++i)
-      if (f.free[i] && i != f.face_axis && (along < 0 || std::abs(d[i]) < std::abs(d[along])))
+      if (f.free(i) && i != f.face_axis && (along < 0 || std::abs(d[i]) < std::abs(d[along])))
         along = i;
-    for (int i = 0; i < 3; ++i) f.free[i] = i == along;
-    classify();
+    return classify(along < 0 ? 0u : 1u << along);
   }
   return f;
 }
@@ -256,14 +261,16 @@ int box_feature_points(const Vec3T<S>& h, const Vec3T<S>& d, const BoxFeatureAxe
     out[3] = c + e1 - e2_signed;
     return 4;
   }
-  Vec3T<S> corner;  // the free axis (an edge's) at 0
-  for (int i = 0; i < 3; ++i) corner[i] = f.free[i] ? S(0) : sign_nonneg(d[i]) * h[i];
-  const Vec3T<S> c = rotation * corner + translation;
+  // The corner with the free axis (an edge's) at 0, as a sum of columns: a vector written
+  // coordinate by coordinate and then read whole would stall on store forwarding.
+  auto coordinate = [&](int i) { return f.free(i) ? S(0) : sign_nonneg(d[i]) * h[i]; };
+  const Vec3T<S> c = rotation.col(0) * coordinate(0) + rotation.col(1) * coordinate(1) +
+                     rotation.col(2) * coordinate(2) + translation;
   if (f.free_count == 0) {
     out[0] = c + radius * push;
     return 1;
   }
-  const int free_axis = f.free[0] ? 0 : (f.free[1] ? 1 : 2);
+  const int free_axis = f.free(0) ? 0 : (f.free(1) ? 1 : 2);
   const Vec3T<S> e = rotation.col(free_axis) * h[free_axis];
   out[0] = c - e;
   out[1] = c + e;

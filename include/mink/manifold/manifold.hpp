@@ -128,13 +128,14 @@ void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
   }
 }
 
-/// The manifold of shapes whose normal and depth come from contact().
+/// The manifold of shapes whose normal and depth come from contact(), into `result` (default
+/// constructed).
 template <ConvexShape A, ConvexShape B>
-ManifoldResultT<typename A::Scalar> manifold_from_contact(
-    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
-    const PoseT<typename A::Scalar>& pose_b, const ManifoldOptionsT<typename A::Scalar>& options) {
+void manifold_from_contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+                           const PoseT<typename A::Scalar>& pose_b,
+                           const ManifoldOptionsT<typename A::Scalar>& options,
+                           ManifoldResultT<typename A::Scalar>& result) {
   using S = typename A::Scalar;
-  ManifoldResultT<S> result;
   const ContactResultT<S> c = contact(a, pose_a, b, pose_b, options.tolerances);
   result.status = c.status;
   result.error = c.error;
@@ -146,7 +147,7 @@ ManifoldResultT<typename A::Scalar> manifold_from_contact(
   result.iterations = c.iterations;
   result.normal_chosen = c.normal_chosen;
   if (c.status == Status::InvalidInput || (!c.intersect && !(c.distance <= options.margin)))
-    return result;
+    return;
   const S size = a.bounding_radius() + b.bounding_radius();
   const S min_depth = -std::max(options.margin, options.tolerances.relative * size);
   const Vec3T<S> n = pose_a.inverse_rotate(c.normal);
@@ -163,7 +164,34 @@ ManifoldResultT<typename A::Scalar> manifold_from_contact(
     result.points[0].point_b = c.point_b;
     result.points[0].depth = c.intersect ? c.depth : -c.distance;
   }
-  return result;
+}
+
+/// The manifold of two boxes (Box or Rounded<Box>) whose cores overlap, into `result` (default
+/// constructed): the separating axis test gives EPA's depth and normal, and the boxes' axes give
+/// their features. Returns false, `result` untouched, when the cores are apart or touching (the
+/// axis test gives no distance) or the clipping finds no points: the general path answers then.
+template <ConvexShape A, ConvexShape B>
+bool box_manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+                  const PoseT<typename A::Scalar>& pose_b,
+                  const ManifoldOptionsT<typename A::Scalar>& options,
+                  ManifoldResultT<typename A::Scalar>& result) {
+  using S = typename A::Scalar;
+  const PoseT<S> rel = pose_a.relative(pose_b);
+  const S size = a.bounding_radius() + b.bounding_radius();
+  const auto axis = box_box_axis(BoxCore<A>::half_extents(a), BoxCore<B>::half_extents(b),
+                                 rel.rotation, rel.translation, S(1e-9) * size);
+  if (!(axis.overlap > options.tolerances.relative * size)) return false;
+  const S min_depth = -std::max(options.margin, options.tolerances.relative * size);
+  ClippedPoints<S> clipped;
+  clip_box_pair(a, b, rel, axis.normal, options.feature_tolerance, min_depth, size,
+                S(kSideSlack) * size, clipped);
+  if (clipped.count == 0) return false;
+  result.status = Status::Intersecting;
+  result.intersect = true;
+  result.depth = axis.overlap + a.core_radius() + b.core_radius();
+  result.normal = pose_a.rotate(axis.normal);
+  keep_four(clipped, pose_a, size, result);
+  return true;
 }
 
 }  // namespace detail
@@ -175,41 +203,19 @@ manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
          const PoseT<typename A::Scalar>& pose_b,
          const ManifoldOptionsT<typename A::Scalar>& options = {}) {
   using S = typename A::Scalar;
-  if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
-    // Two boxes: the separating axis test gives EPA's depth and normal whenever the cores overlap.
-    ManifoldResultT<S> result;
-    if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
-    if (!(options.margin >= S(0)) || !(options.feature_tolerance >= S(0))) {
-      result.error = "manifold margin and feature_tolerance must be >= 0";
-      return result;
-    }
-    const PoseT<S> rel = pose_a.relative(pose_b);
-    const S size = a.bounding_radius() + b.bounding_radius();
-    const auto axis = detail::box_box_axis(detail::BoxCore<A>::half_extents(a),
-                                           detail::BoxCore<B>::half_extents(b), rel.rotation,
-                                           rel.translation, S(1e-9) * size);
-    if (axis.overlap > options.tolerances.relative * size) {
-      const S min_depth = -std::max(options.margin, options.tolerances.relative * size);
-      detail::ClippedPoints<S> clipped;
-      detail::clip_box_pair(a, b, rel, axis.normal, options.feature_tolerance, min_depth, size,
-                            S(detail::kSideSlack) * size, clipped);
-      if (clipped.count > 0) {
-        result.status = Status::Intersecting;
-        result.intersect = true;
-        result.depth = axis.overlap + a.core_radius() + b.core_radius();
-        result.normal = pose_a.rotate(axis.normal);
-        detail::keep_four(clipped, pose_a, size, result);
-        return result;
-      }
-    }
-    // Cores apart or touching (the axis test gives no distance), or no points: the general path.
-  }
+  // One result object for every path, returned by name: a second one moved out would copy its
+  // 300 bytes (a few percent of a box pair's time).
+  ManifoldResultT<S> result;
+  if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
   if (!(options.margin >= S(0)) || !(options.feature_tolerance >= S(0))) {
-    ManifoldResultT<S> result;
     result.error = "manifold margin and feature_tolerance must be >= 0";
     return result;
   }
-  return detail::manifold_from_contact(a, pose_a, b, pose_b, options);
+  if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
+    if (detail::box_manifold(a, pose_a, b, pose_b, options, result)) return result;
+  }
+  detail::manifold_from_contact(a, pose_a, b, pose_b, options, result);
+  return result;
 }
 
 }  // namespace mink

@@ -151,19 +151,18 @@ BoxBoxAxis<S> box_best_axis(const BoxPairAxes<S>& axes, const Mat3T<S>& r, const
   }
 
   // best: 0..2 A's face axis, 3..5 B's face axis 0..2, 6 + 3 i + j the edge axis e_i x r.col(j).
+  // The normals are built by arithmetic, not written coordinate by coordinate: a vector written
+  // in parts and then read whole stalls on store forwarding.
   BoxBoxAxis<S> result{least, Vec3T<S>::Zero(), best};
   if (best < 3) {
-    result.normal[best] = sign_nonneg(t[best]);
+    result.normal = Vec3T<S>::Unit(best) * sign_nonneg(t[best]);
   } else if (best < 6) {
     result.normal = r.col(best - 3) * sign_nonneg(axes.offset_along_b[best - 3]);
   } else {
     const int i = (best - 6) / 3, j = (best - 6) % 3;
     const S length = std::sqrt(axes.edge_length_sq[best - 6]);
     result.overlap = axes.edge_overlap[best - 6] / length;
-    Vec3T<S> axis;
-    axis[i] = S(0);
-    axis[kNextAxis[i]] = -r(kPrevAxis[i], j);
-    axis[kPrevAxis[i]] = r(kNextAxis[i], j);
+    const Vec3T<S> axis = Vec3T<S>::Unit(i).cross(r.col(j));  // exact: products with 0 and 1
     result.normal = axis * (sign_nonneg(axis.dot(t)) / length);
   }
   return result;
