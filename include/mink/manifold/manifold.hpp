@@ -146,8 +146,7 @@ void manifold_from_contact(const A& a, const PoseT<typename A::Scalar>& pose_a, 
   result.error_bound = c.error_bound;
   result.iterations = c.iterations;
   result.normal_chosen = c.normal_chosen;
-  if (c.status == Status::InvalidInput || (!c.intersect && !(c.distance <= options.margin)))
-    return;
+  if (c.status == Status::InvalidInput || (!c.intersect && !(c.distance <= options.margin))) return;
   const S size = a.bounding_radius() + b.bounding_radius();
   const S min_depth = -std::max(options.margin, options.tolerances.relative * size);
   const Vec3T<S> n = pose_a.inverse_rotate(c.normal);
