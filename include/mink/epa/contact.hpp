@@ -101,7 +101,8 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   ContactResultT<S> result;
   if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
   const S radius_a = a.core_radius(), radius_b = b.core_radius();
-  const S size = a.bounding_radius() + b.bounding_radius();
+  const S bound_a = a.bounding_radius(), bound_b = b.bounding_radius();
+  const S size = bound_a + bound_b;
   const S touch = tolerances.relative * size;
   const S inside = radius_a + radius_b + touch;
   if constexpr (detail::kSegmentCores<A, B>) {
@@ -176,7 +177,8 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       // the witnesses must be exact; and no slack at the side planes, so the points stay on the
       // faces. The true support point is always among the clipped ones.
       detail::ClippedPoints<S> clipped;
-      detail::clip_box_pair(a, b, rel, axis.normal, S(1e-9), -touch, size, S(0), clipped);
+      detail::clip_box_pair(a, b, rel, axis.normal, S(1e-9), -touch, bound_a, bound_b, S(0),
+                            clipped);
       if (clipped.count > 0) {
         int deepest = 0;
         for (int i = 1; i < clipped.count; ++i)

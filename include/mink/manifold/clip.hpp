@@ -111,7 +111,8 @@ int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* k
     if (length_sq[i] > farthest_sq) farthest_sq = length_sq[farthest = i];
   }
   if (!(farthest_sq > min_length * min_length)) return 1;
-  const S tie = std::sqrt(farthest_sq) - min_length;
+  const S farthest_length = std::sqrt(farthest_sq);
+  const S tie = farthest_length - min_length;
   int b = 0;
   while (b < farthest && !(length_sq[b] >= tie * tie)) ++b;
   keep[1] = b;
@@ -126,7 +127,9 @@ int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* k
     return Edge{-dy, dx, dy * o.x - dx * o.y};
   };
   const Edge ab = edge(pa, pb);
-  const S min_area = min_length * std::sqrt(length_sq[b]);
+  // |ab| is within min_length of farthest_length; the area tolerance takes the latter, whose
+  // square root is already known (a second one would wait on the choice of b).
+  const S min_area = min_length * farthest_length;
   const int c = first_near_max(count, min_area, min_area,
                                [&](int i) { return std::abs(ab.area(points[i])); });
   if (c < 0) {

@@ -17,22 +17,24 @@ namespace mink::detail {
 /// overlap along `n`, the separating axis test's normal, and when their features are two crossing
 /// edges (no clipping), the edges' closest points as the one point (their difference is along n
 /// because n is the edges' common perpendicular). The arguments are clip_features()': `rel` is B's
-/// pose in A's frame, `n` the unit normal in A's frame.
+/// pose in A's frame, `n` the unit normal in A's frame; but instead of their sum `size`, the two
+/// bounding radii, which the caller has already computed (their square roots would otherwise
+/// stand at the head of this function's chain of dependencies).
 template <ConvexShape A, ConvexShape B>
 void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
                    const Vec3T<typename A::Scalar>& n, typename A::Scalar feature_tolerance,
-                   typename A::Scalar min_depth, typename A::Scalar size, typename A::Scalar slack,
+                   typename A::Scalar min_depth, typename A::Scalar bound_a,
+                   typename A::Scalar bound_b, typename A::Scalar slack,
                    ClippedPoints<typename A::Scalar>& out) {
   using S = typename A::Scalar;
   const Vec3T<S>& ha = BoxCore<A>::half_extents(a);
   const Vec3T<S>& hb = BoxCore<B>::half_extents(b);
+  const S size = bound_a + bound_b;
   out.count = 0;
   // Each box's feature direction in its own frame: A's along n, B's against it.
   const Vec3T<S> nb = rel.inverse_rotate(-n);
-  const BoxFeatureAxes fa =
-      box_feature_axes(ha, n, feature_tolerance * a.bounding_radius(), a.core_radius());
-  const BoxFeatureAxes fb =
-      box_feature_axes(hb, nb, feature_tolerance * b.bounding_radius(), b.core_radius());
+  const BoxFeatureAxes fa = box_feature_axes(ha, n, feature_tolerance * bound_a, a.core_radius());
+  const BoxFeatureAxes fb = box_feature_axes(hb, nb, feature_tolerance * bound_b, b.core_radius());
 
   // The reference face, as clip_features() picks it.
   bool ref_is_a;

@@ -65,11 +65,27 @@ void clip_by_box_face(const Vec3T<S>& h, int k, S side, S w, const Vec3T<S>* inc
   const int iu = kNextAxis[k], iv = kPrevAxis[k];
   // Points move along n onto the plane.
   const S inv = S(1) / std::abs(n[k]);
+  // The face's point above (x, y) is origin + x x_axis + y y_axis, all three taken to A's frame
+  // once. Set up first: vectors that the compiler builds in memory coordinate by coordinate and
+  // reads whole stall on store forwarding unless the stores have long completed.
+  Vec3T<S> origin = Vec3T<S>::Unit(k) * (side * w), x_axis = Vec3T<S>::Unit(iu),
+           y_axis = Vec3T<S>::Unit(iv) * side, n_in_a = n;
+  if (to_a) {
+    origin = to_a->apply(origin);
+    x_axis = to_a->rotation.col(iu);
+    y_axis = to_a->rotation.col(iv) * side;
+    n_in_a = to_a->rotate(n);
+  }
   PlanarPoint<S> buffer[2][kMaxClipPoints];
+  // x and y as one pair: clip_by_line() copies and interpolates them as a pair, and a pair
+  // loaded from two separate stores stalls on store forwarding.
+  using Pair = Eigen::Array<S, 2, 1>;
+  const S nu = n[iu], nv = n[iv];
   for (int i = 0; i < count; ++i) {
     const Vec3T<S>& p = incident[i];
     const S t = (w - side * p[k]) * inv;
-    buffer[0][i] = {p[iu] + t * n[iu], side * (p[iv] + t * n[iv]), t};
+    Eigen::Map<Pair>(&buffer[0][i].x) = Pair(p[iu] + t * nu, side * (p[iv] + t * nv));
+    buffer[0][i].depth = t;
   }
   // The side lines in the order of the face's edges (counter-clockwise about its normal, which
   // the factor `side` on y keeps for both faces of the axis): y <= h_v, x >= -h_u, y >= -h_v,
@@ -98,17 +114,6 @@ void clip_by_box_face(const Vec3T<S>& h, int k, S side, S w, const Vec3T<S>* inc
   if (max_x > hu + slack) clip([hu](const P& p) { return hu - p.x; });
   // Back to 3D in A's frame: the point of the face above (x, y), and the incident point `depth`
   // below it along n.
-  // The face's point above (x, y) is origin + x x_axis + y y_axis, all three taken to A's frame
-  // once (a vector written coordinate by coordinate and read whole would stall on store
-  // forwarding).
-  Vec3T<S> origin = Vec3T<S>::Unit(k) * (side * w), x_axis = Vec3T<S>::Unit(iu),
-           y_axis = Vec3T<S>::Unit(iv) * side, n_in_a = n;
-  if (to_a) {
-    origin = to_a->apply(origin);
-    x_axis = to_a->rotation.col(iu);
-    y_axis = to_a->rotation.col(iv) * side;
-    n_in_a = to_a->rotate(n);
-  }
   for (int i = 0; i < count; ++i) {
     const PlanarPoint<S>& p = buffer[cur][i];
     if (!(p.depth >= min_depth)) continue;

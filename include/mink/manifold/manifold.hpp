@@ -176,13 +176,14 @@ bool box_manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& 
                   ManifoldResultT<typename A::Scalar>& result) {
   using S = typename A::Scalar;
   const PoseT<S> rel = pose_a.relative(pose_b);
-  const S size = a.bounding_radius() + b.bounding_radius();
+  const S bound_a = a.bounding_radius(), bound_b = b.bounding_radius();
+  const S size = bound_a + bound_b;
   const auto axis = box_box_axis(BoxCore<A>::half_extents(a), BoxCore<B>::half_extents(b),
                                  rel.rotation, rel.translation, S(1e-9) * size);
   if (!(axis.overlap > options.tolerances.relative * size)) return false;
   const S min_depth = -std::max(options.margin, options.tolerances.relative * size);
   ClippedPoints<S> clipped;
-  clip_box_pair(a, b, rel, axis.normal, options.feature_tolerance, min_depth, size,
+  clip_box_pair(a, b, rel, axis.normal, options.feature_tolerance, min_depth, bound_a, bound_b,
                 S(kSideSlack) * size, clipped);
   if (clipped.count == 0) return false;
   result.status = Status::Intersecting;

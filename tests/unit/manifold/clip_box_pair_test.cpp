@@ -29,7 +29,8 @@ void expect_same_points(const A& a, const Pose& pa, const B& b, const Pose& pb, 
   if (!(axis.overlap > 1e-9 * size)) return;
   const double min_depth = -1e-9 * size, slack = detail::kSideSlack * size;
   detail::ClippedPoints<double> box_path, general;
-  detail::clip_box_pair(a, b, rel, axis.normal, 1e-3, min_depth, size, slack, box_path);
+  detail::clip_box_pair(a, b, rel, axis.normal, 1e-3, min_depth, a.bounding_radius(),
+                        b.bounding_radius(), slack, box_path);
   detail::clip_features(a, b, rel, axis.normal, 1e-3, min_depth, size, slack, general);
   if (general.count == 0) return;  // crossing edges: clip_box_pair adds their closest points
   ASSERT_EQ(box_path.count, general.count) << "case " << k;
