@@ -24,6 +24,15 @@ struct PlanarPoint {
   S x, y, depth;
 };
 
+/// Sets `p` to (x, y, depth), x and y stored as one pair: clip_by_line() copies and interpolates
+/// them as a pair, and a pair loaded from two separate stores stalls on store forwarding.
+template <class S>
+[[gnu::always_inline]] inline void set_planar(PlanarPoint<S>& p, S x, S y, S depth) {
+  using Pair = Eigen::Array<S, 2, 1>;
+  Eigen::Map<Pair>(&p.x) = Pair(x, y);
+  p.depth = depth;
+}
+
 /// Clips the polygon (count >= 3, closed), segment (count 2) or point (count 1) `in` to the
 /// points where height(p) >= -slack, carrying the depths along, and writes the result to `out`;
 /// returns its number of points. `height` is affine in (x, y) (a signed distance to a line).

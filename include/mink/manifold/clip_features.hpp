@@ -77,15 +77,11 @@ void clip_by_box_face(const Vec3T<S>& h, int k, S side, S w, const Vec3T<S>* inc
     n_in_a = to_a->rotate(n);
   }
   PlanarPoint<S> buffer[2][kMaxClipPoints];
-  // x and y as one pair: clip_by_line() copies and interpolates them as a pair, and a pair
-  // loaded from two separate stores stalls on store forwarding.
-  using Pair = Eigen::Array<S, 2, 1>;
-  const S nu = n[iu], nv = n[iv];
+  const S nu = n[iu], nv = n[iv];  // in registers: a pair built in memory would stall too
   for (int i = 0; i < count; ++i) {
     const Vec3T<S>& p = incident[i];
     const S t = (w - side * p[k]) * inv;
-    Eigen::Map<Pair>(&buffer[0][i].x) = Pair(p[iu] + t * nu, side * (p[iv] + t * nv));
-    buffer[0][i].depth = t;
+    set_planar(buffer[0][i], p[iu] + t * nu, side * (p[iv] + t * nv), t);
   }
   // The side lines in the order of the face's edges (counter-clockwise about its normal, which
   // the factor `side` on y keeps for both faces of the axis): y <= h_v, x >= -h_u, y >= -h_v,
@@ -253,7 +249,7 @@ void clip_feature_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& 
   int count = inc->count;
   for (int i = 0; i < count; ++i) {
     const Vec3T<S>& p = inc->points[i];
-    buffer[0][i] = {u.dot(p), v.dot(p), (w - m.dot(p)) * inv};
+    set_planar(buffer[0][i], u.dot(p), v.dot(p), (w - m.dot(p)) * inv);
   }
   int cur = 0;
   // The clip lines a x + b y >= c - slack |(a, b)|, all set up before any clipping (their square
