@@ -115,8 +115,14 @@ template <class S>
 template <class S>
 inline constexpr S kTinySegmentSq = power_of_two<S>(std::numeric_limits<S>::min_exponent / 2);
 
+/// Squared lengths (of the half vectors and the centres' offset) above this (2^508, about 8e152 in
+/// double) are solved rescaled too: segment_parameters() multiplies four lengths together, which
+/// overflows from about 1e77 (boxes of 3e77 gave NaN manifold points).
+template <class S>
+inline constexpr S kHugeSegmentSq = power_of_two<S>(std::numeric_limits<S>::max_exponent / 2 - 4);
+
 /// segment_parameters() on the pair scaled to its largest coordinate, for segments whose squared
-/// lengths underflow (see closest_points_of_segments()); out of line, as it is rare.
+/// lengths underflow or overflow (see closest_points_of_segments()); out of line, as it is rare.
 template <class S>
 [[gnu::noinline]] void segment_parameters_rescaled(const Vec3T<S>& hp, const Vec3T<S>& hq,
                                                    const Vec3T<S>& w, S& u, S& v) {
@@ -155,11 +161,12 @@ template <class S>
   S u = S(0), v = S(0);
   // Segments shorter than 1e-77 (in double, kTinySegmentSq): their squared lengths and the
   // products of those lose digits or underflow, and a segment of 1e-170 would count as a point.
-  // u and v do not change with the scale, so such a pair is solved rescaled.
+  // u and v do not change with the scale, so such a pair is solved rescaled, as is one whose
+  // lengths or offset are so large that products of four of them overflow (kHugeSegmentSq).
   constexpr S kTinySq = kTinySegmentSq<S>;
   const S a = hp.squaredNorm(), e = hq.squaredNorm();
-  if ((a < kTinySq && hp != Vec3T<S>::Zero()) || (e < kTinySq && hq != Vec3T<S>::Zero()))
-      [[unlikely]]
+  if ((a < kTinySq && hp != Vec3T<S>::Zero()) || (e < kTinySq && hq != Vec3T<S>::Zero()) ||
+      !(std::max(std::max(a, e), w.squaredNorm()) <= kHugeSegmentSq<S>)) [[unlikely]]
     segment_parameters_rescaled(hp, hq, w, u, v);
   else
     segment_parameters(hp, hq, w, a, e, u, v);

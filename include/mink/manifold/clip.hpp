@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 #include "mink/math/vec.hpp"
@@ -28,6 +29,7 @@ struct PlanarPoint {
 /// them as a pair, and a pair loaded from two separate stores stalls on store forwarding.
 template <class S>
 [[gnu::always_inline]] inline void set_planar(PlanarPoint<S>& p, S x, S y, S depth) {
+  static_assert(offsetof(PlanarPoint<S>, y) == offsetof(PlanarPoint<S>, x) + sizeof(S));
   using Pair = Eigen::Array<S, 2, 1>;
   Eigen::Map<Pair>(&p.x) = Pair(x, y);
   p.depth = depth;
@@ -120,8 +122,7 @@ int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* k
     if (length_sq[i] > farthest_sq) farthest_sq = length_sq[farthest = i];
   }
   if (!(farthest_sq > min_length * min_length)) return 1;
-  const S farthest_length = std::sqrt(farthest_sq);
-  const S tie = farthest_length - min_length;
+  const S tie = std::sqrt(farthest_sq) - min_length;
   int b = 0;
   while (b < farthest && !(length_sq[b] >= tie * tie)) ++b;
   keep[1] = b;
@@ -136,9 +137,7 @@ int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* k
     return Edge{-dy, dx, dy * o.x - dx * o.y};
   };
   const Edge ab = edge(pa, pb);
-  // |ab| is within min_length of farthest_length; the area tolerance takes the latter, whose
-  // square root is already known (a second one would wait on the choice of b).
-  const S min_area = min_length * farthest_length;
+  const S min_area = min_length * std::sqrt(length_sq[b]);
   const int c = first_near_max(count, min_area, min_area,
                                [&](int i) { return std::abs(ab.area(points[i])); });
   if (c < 0) {

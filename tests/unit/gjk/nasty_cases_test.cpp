@@ -87,6 +87,24 @@ TEST(GjkNasty, EdgeOnEdge) {
                    1e-6, 1e-14, Vec3::UnitZ());
 }
 
+// Capsules whose segments are 1e78 and more long, crossing at right angles 3 lengths apart: the
+// closed form multiplies four lengths, which overflowed to NaN; such pairs are solved rescaled.
+TEST(GjkNasty, HugeCrossingCapsulesStayFinite) {
+  for (double s : {1.0, 1e76, 1e78, 1e120, 1e150}) {
+    const mink::Capsule c{0.25 * s, s};
+    // B's segment runs along y through (3, 0.5, 0.3) s: the closest points are its point at y = 0
+    // and A's at z = 0.3, off both centres.
+    const Pose pb =
+        Pose::from(Vec3(3, 0.5, 0.3) * s, Quat(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitX())));
+    const auto r = mink::distance(c, Pose::identity(), c, pb);
+    ASSERT_EQ(r.status, mink::Status::Separated) << s;
+    EXPECT_NEAR(r.distance / s, 2.5, 1e-14) << s;
+    EXPECT_LE((r.point_a / s - Vec3(0.25, 0, 0.3)).norm(), 1e-14) << s;
+    EXPECT_LE((r.point_b / s - Vec3(2.75, 0, 0.3)).norm(), 1e-14) << s;
+    EXPECT_LE((r.normal - Vec3::UnitX()).norm(), 1e-14) << s;
+  }
+}
+
 TEST(GjkNasty, ParallelFacesAndEdges) {
   const Box a{Vec3(1, 1, 1)}, b{Vec3(0.5, 2, 0.25)};
   expect_separated(a, Pose::identity(), b, at(2.0, 0.3, 0.1), 0.5, 1e-15, Vec3::UnitX());
