@@ -57,7 +57,7 @@ void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
     // Parallel edges clip against each other's end planes (rare: the separating axis test skips
     // axes of nearly parallel edges; the test is clip_features()'); crossing ones touch at their
     // closest points.
-    // Compared squared: three square roots cost a tenth of the query.
+    // Compared squared, without three square roots on the way to the edges' closest points.
     const S limit = feature_tolerance * size;
     if (da.cross(db).squaredNorm() <= limit * limit * std::max(da.squaredNorm(), db.squaredNorm()))
       clip_features(a, b, rel, n, feature_tolerance, min_depth, size, slack, out);

@@ -194,7 +194,7 @@ struct BoxFeatureAxes {
 };
 
 // Plain scalars throughout, no array of flags: an array written flag by flag and then copied as a
-// whole stalls the copy's wide load on store forwarding (a fifth of a box-box manifold's time).
+// whole stalls the copy's wide load on store forwarding (5 % of a box-box manifold's time).
 template <class S>
 [[gnu::always_inline]] inline BoxFeatureAxes box_feature_axes(const Vec3T<S>& h, const Vec3T<S>& d,
                                                               S limit, S radius = S(0)) {
