@@ -391,9 +391,10 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
                    typename A::Scalar min_depth, typename A::Scalar size, typename A::Scalar slack,
                    ClippedPoints<typename A::Scalar>& out) {
   using S = typename A::Scalar;
+  const Vec3T<S> nb = rel.inverse_rotate(-n);  // B's feature direction, in B's frame
   SupportFeatureT<S> fa, fb;
   support_feature_of(a, n, feature_tolerance * a.bounding_radius(), fa);
-  support_feature_of(b, rel.inverse_rotate(-n), feature_tolerance * b.bounding_radius(), fb);
+  support_feature_of(b, nb, feature_tolerance * b.bounding_radius(), fb);
   // The radius moves a face along its own normal and a vertex along the contact normal. An
   // edge tilted from the normal by t (within the tolerance) moves along the normal at its deeper
   // end, whose rounded end is deepest there, and across the edge at its other end: both are then
@@ -414,7 +415,7 @@ void clip_features(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
     f.points[0] += radius * toward;
   };
   push(fa, n, a.core_radius());
-  push(fb, rel.inverse_rotate(-n), b.core_radius());
+  push(fb, nb, b.core_radius());
   fb.normal = rel.rotate(fb.normal);
   for (int i = 0; i < fb.count; ++i) fb.points[i] = rel.apply(fb.points[i]);
   if (fb.disc_radius > S(0)) fb.disc_centre = rel.apply(fb.disc_centre);

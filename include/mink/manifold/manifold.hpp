@@ -206,12 +206,13 @@ manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   // One result object for every path, returned by name: a second one moved out would copy its
   // 300 bytes (a few percent of a box pair's time).
   ManifoldResultT<S> result;
-  if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
   if (!(options.margin >= S(0)) || !(options.feature_tolerance >= S(0))) {
     result.error = "manifold margin and feature_tolerance must be >= 0";
     return result;
   }
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
+    // contact() checks the input on the general path; the box path must check it itself.
+    if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
     if (detail::box_manifold(a, pose_a, b, pose_b, options, result)) return result;
   }
   detail::manifold_from_contact(a, pose_a, b, pose_b, options, result);
