@@ -20,9 +20,10 @@ struct BoxT {
   S core_radius() const { return S(0); }
   S bounding_radius() const { return half_extents.norm(); }
   const char* error() const {
-    for (int i = 0; i < 3; ++i)
-      if (!detail::is_length(half_extents[i])) return "box half_extents must be finite and >= 0";
-    return nullptr;
+    // One branch for the three (& does not short-circuit).
+    const bool valid = detail::is_length(half_extents[0]) & detail::is_length(half_extents[1]) &
+                       detail::is_length(half_extents[2]);
+    return valid ? nullptr : "box half_extents must be finite and >= 0";
   }
 };
 

@@ -75,10 +75,11 @@ inline bool planar_unit(S x, S y, S& ux, S& uy) {
   return true;
 }
 
-/// True for a finite, non-negative length.
+/// True for a finite, non-negative length. Two comparisons, which NaN and both infinities fail:
+/// every query checks its shapes' lengths, and std::isfinite() costs a mask and a third compare.
 template <class S>
-inline bool is_length(S x) {
-  return std::isfinite(x) && x >= S(0);
+[[gnu::always_inline]] inline bool is_length(S x) {
+  return x >= S(0) && x <= std::numeric_limits<S>::max();
 }
 
 }  // namespace mink::detail
