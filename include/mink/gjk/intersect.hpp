@@ -11,7 +11,8 @@
 /// Rounded versions) take a closed form instead (segment_cores.hpp) and report 0 iterations; so do
 /// pairs of boxes (and rounded boxes) that the separating axis test decides
 /// (query/box_box.hpp: when the cores overlap or are clearly apart, and no two edges are parallel
-/// to within 1e-6 without being exactly parallel), and spheres and points against boxes
+/// to within 1e-6 without being exactly parallel; a point common to both cores also proves an
+/// overlap), and spheres and points against boxes
 /// (query/point_box.hpp).
 #pragma once
 

@@ -1,8 +1,9 @@
 /// @file box_box.hpp
 /// Two boxes (Box, or Rounded<Box>: the run-time Shape's box core) need no GJK or EPA while the
-/// separating axis test can answer: intersect() asks box_box_verdict() as it computes the axes;
-/// distance() and contact() compute all 15 (box_pair_axes()) once, for the verdict, the best axis
-/// (box_best_axis()) and the closest or deepest points (box_box_closest()); manifold() asks
+/// separating axis test can answer: intersect() asks box_box_verdict() as it computes the axes
+/// (and, for overlapping boxes, first looks for a point common to both, which spares the edge
+/// axes); distance() and contact() compute all 15 (box_pair_axes()) once, for the verdict, the best
+/// axis (box_best_axis()) and the closest or deepest points (box_box_closest()); manifold() asks
 /// box_box_axis().
 ///
 /// Penetration depth and normal of two overlapping boxes by the separating axis test: the 3 + 3
