@@ -11,8 +11,8 @@
 /// Rounded versions) take a closed form instead (segment_cores.hpp) and report 0 iterations; so do
 /// pairs of boxes (and rounded boxes) that the separating axis test decides
 /// (query/box_box.hpp: when the cores overlap or are clearly apart, and no two edges are parallel
-/// to within 1e-6 without being exactly parallel; a point common to both cores also proves an
-/// overlap), and spheres and points against boxes
+/// to within 1e-6 without being exactly parallel; a point of one core within reach of the other
+/// also proves an overlap), and spheres and points against boxes
 /// (query/point_box.hpp).
 #pragma once
 
@@ -81,9 +81,10 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     return result;
   }
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
-    // Two boxes: the separating axis test decides in a few flops unless its largest gap lies
-    // between 0 and the radii plus the touching tolerance (a corner near a corner: the distance
-    // is then larger than any axis's gap) or an edge axis is nearly degenerate; GJK decides then.
+    // Two boxes: a point of B within reach of A, or the separating axis test, decides in a few
+    // flops unless the axes' largest gap lies between 0 and the radii plus the touching tolerance
+    // (a corner near a corner: the distance is then larger than any axis's gap) or an edge axis is
+    // nearly degenerate; GJK decides then.
     const PoseT<S> rel = pose_a.relative(pose_b);
     const auto verdict = detail::box_box_verdict(detail::BoxCore<A>::half_extents(a),
                                                  detail::BoxCore<B>::half_extents(b), rel.rotation,

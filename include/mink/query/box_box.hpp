@@ -1,7 +1,7 @@
 /// @file box_box.hpp
 /// Two boxes (Box, or Rounded<Box>: the run-time Shape's box core) need no GJK or EPA while the
 /// separating axis test can answer: intersect() asks box_box_verdict() as it computes the axes
-/// (and, for overlapping boxes, first looks for a point common to both, which spares the edge
+/// (and, for overlapping boxes, first looks for a point of B at A, which spares the edge
 /// axes); distance() and contact() compute all 15 (box_pair_axes()) once, for the verdict, the best
 /// axis (box_best_axis()) and the closest or deepest points (box_box_closest()); manifold() asks
 /// box_box_axis().
@@ -191,7 +191,8 @@ BoxBoxAxis<S> box_box_axis(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S
   return box_best_axis(box_pair_axes(ha, hb, r, t), r, t, edge_bias);
 }
 
-/// What the separating axis test alone can tell about two boxes: `gap` (unit: length, >= 0) is
+/// What the separating axis test (with the common points of box_box_verdict()) can tell about two
+/// boxes without GJK: `gap` (unit: length, >= 0) is
 /// how far apart their cores may be and still count as intersecting (the radii plus the touching
 /// tolerance).
 enum class BoxBoxVerdict { Separated, Overlapping, Unsure };
@@ -215,31 +216,34 @@ BoxBoxVerdict box_edge_verdict(const BoxPairAxes<S>& axes, S gap, bool apart) {
   return !apart && !degenerate ? BoxBoxVerdict::Overlapping : BoxBoxVerdict::Unsure;
 }
 
-/// Whether the point of one box (half extents h_from) nearest to the centre of the other (at c
-/// in h_from's frame) lies in that other box (half extents h_to, whose frame is reached by
-/// (rotation, c) as q = rotation (p - c)): a point common to both boxes, which proves that they
-/// overlap at the cost of one point's transform. It finds one for most overlapping pairs
-/// (resting contact, and two thirds of random overlaps), where the separating axis test would
-/// need all 15 axes; shallow corner and edge contacts fail it and take the axes.
-template <class S, class Rotation>
-[[gnu::always_inline]] inline bool box_nearest_point_in_other(const Vec3T<S>& h_from,
-                                                              const Vec3T<S>& h_to,
-                                                              const Rotation& rotation,
-                                                              const Vec3T<S>& c) {
-  const Vec3T<S> p = c.cwiseMax(-h_from).cwiseMin(h_from);
-  const Vec3T<S> q = rotation * (p - c);
-  // Not within the gap but inside: exact, with no squares to underflow. (A NaN from an
-  // overflowed product compares false and leaves the answer to the axes.)
-  return (q.cwiseAbs().array() <= h_to.array()).all();
+/// Whether B's point x (in B's frame, inside B: half extents hb) lies within `gap` (unit: length)
+/// of box A (half extents ha), B being at (r, t) in A's frame: a point of B that close to A proves
+/// that the boxes count as intersecting, at the cost of one point's transform. x is taken to A's
+/// frame as r x + t, the map of B's support points, so the proof holds for r as given (to
+/// rounding), even when r is orthonormal only to the 1e-6 that pose_error() allows; checking a
+/// point of A in B's frame would need r's inverse, not its transpose. Each coordinate may exceed
+/// A's extent by gap / sqrt(3), which bounds the distance by gap, with no squares to underflow. (A
+/// NaN from an overflowed product compares false and leaves the answer to the axes.)
+template <class S>
+[[gnu::always_inline]] inline bool box_point_of_b_near_a(const Vec3T<S>& ha, const Vec3T<S>& hb,
+                                                         const Mat3T<S>& r, const Vec3T<S>& t,
+                                                         const Vec3T<S>& x, S gap) {
+  const Vec3T<S> on_b = x.cwiseMax(-hb).cwiseMin(hb);
+  const Vec3T<S> y = r * on_b + t;
+  const S slack = gap * S(0.577);  // a little under gap / sqrt(3)
+  return ((y.cwiseAbs() - ha).array() <= slack).all();
 }
 
 /// Separated as soon as one of the 15 axes separates the boxes by more than `gap` (the distance
 /// is at least that, to rounding, for the rotation r as given); Overlapping when no axis separates
-/// them at all (the separating axis theorem), or when a point of A nearest to B's centre, or of B
-/// nearest to A's, lies in the other box (box_nearest_point_in_other(), after each box's face
-/// axes, which tell most separated pairs apart first); Unsure in between, and also when an edge
-/// axis is nearly degenerate (edges parallel to 1e-6 but not exactly), where the theorem's axis
-/// cannot be trusted to rounding. This form computes the axes as it goes, for intersect().
+/// them at all (the separating axis theorem), or when a point of B lies within `gap` of A
+/// (box_point_of_b_near_a(), tried after each box's face axes, which tell most separated pairs
+/// apart first). The points tried: B's point nearest to A's point nearest to B's centre, and B's
+/// point nearest to A's centre; one of them is in A for most overlapping pairs (resting contact,
+/// three quarters of random overlaps), where the axes would all be needed. Unsure in between, and
+/// also when an edge axis is nearly degenerate (edges parallel to 1e-6 but not exactly) and no
+/// point proved the overlap, where the theorem's axis cannot be trusted to rounding. This form
+/// computes the axes as it goes, for intersect().
 template <class S>
 BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
                               const Vec3T<S>& t, S gap) {
@@ -250,7 +254,9 @@ BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3
     if (g > gap) return BoxBoxVerdict::Separated;
     apart |= g > S(0);
   }
-  if (box_nearest_point_in_other(ha, hb, r.transpose(), t)) return BoxBoxVerdict::Overlapping;
+  // A's point nearest to B's centre, taken to B's frame (then clamped to B).
+  const Vec3T<S> near_b_centre = r.transpose() * (Vec3T<S>(t.cwiseMax(-ha).cwiseMin(ha)) - t);
+  if (box_point_of_b_near_a(ha, hb, r, t, near_b_centre, gap)) return BoxBoxVerdict::Overlapping;
   // B's centre along B's axes, whole (built entry by entry, it would stall when read whole): A's
   // centre is at -offset_along_b in B's frame.
   const Vec3T<S> offset_along_b = r.transpose() * t;
@@ -259,7 +265,7 @@ BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3
     if (g > gap) return BoxBoxVerdict::Separated;
     apart |= g > S(0);
   }
-  if (box_nearest_point_in_other(hb, ha, r, Vec3T<S>(-offset_along_b)))
+  if (box_point_of_b_near_a(ha, hb, r, t, Vec3T<S>(-offset_along_b), gap))
     return BoxBoxVerdict::Overlapping;
   BoxPairAxes<S> axes;
   box_edge_axes(ha, hb, abs_r, r, t, axes);

@@ -18,7 +18,9 @@ struct BoxT {
             detail::sign_nonneg(d.z()) * half_extents.z()};
   }
   S core_radius() const { return S(0); }
-  S bounding_radius() const { return half_extents.norm(); }
+  /// |half_extents|, also where its square overflows or underflows (half extents beyond 1e154 or
+  /// under 1e-154: a plain norm() is inf or 0 there, and every tolerance scaled by it with it).
+  S bounding_radius() const { return detail::length_of(half_extents, half_extents.squaredNorm()); }
   const char* error() const {
     // One branch for the three (& does not short-circuit).
     const bool valid = detail::is_length(half_extents[0]) & detail::is_length(half_extents[1]) &

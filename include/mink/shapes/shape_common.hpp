@@ -77,9 +77,11 @@ inline bool planar_unit(S x, S y, S& ux, S& uy) {
 
 /// True for a finite, non-negative length. Two comparisons, which NaN and both infinities fail:
 /// every query checks its shapes' lengths, and std::isfinite() costs a mask and a third compare.
+/// Quiet comparisons: a NaN length must give an error message, not FE_INVALID (a trap, where
+/// floating-point exceptions are enabled).
 template <class S>
 [[gnu::always_inline]] inline bool is_length(S x) {
-  return x >= S(0) && x <= std::numeric_limits<S>::max();
+  return std::isgreaterequal(x, S(0)) && std::islessequal(x, std::numeric_limits<S>::max());
 }
 
 }  // namespace mink::detail

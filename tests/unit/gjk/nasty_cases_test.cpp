@@ -105,6 +105,53 @@ TEST(GjkNasty, HugeCrossingCapsulesStayFinite) {
   }
 }
 
+// Boxes, points and segments whose size squared overflows or underflows: their bounding radius
+// scales every tolerance, and a plain norm() made it inf above 1e154 (every pair then touched:
+// boxes 8 sizes apart intersected, at distance 0) or 0 below 1e-154.
+TEST(GjkNasty, HugeAndTinyBoxesKeepTheirTolerances) {
+  for (double s : {1e-200, 1e-160, 1.0, 1e160, 1e200}) {
+    const Box a{Vec3(1, 1, 1) * s}, b{Vec3(1, 2, 1) * s};
+    EXPECT_NEAR(a.bounding_radius() / s, std::sqrt(3.0), 1e-15) << s;
+    const Pose apart = Pose::from_translation(Vec3(10, 0, 0) * s);
+    const auto hit = mink::intersect(a, Pose::identity(), b, apart);
+    EXPECT_EQ(hit.status, mink::Status::Separated) << s;
+    const auto d = mink::distance(a, Pose::identity(), b, apart);
+    ASSERT_EQ(d.status, mink::Status::Separated) << s;
+    EXPECT_NEAR(d.distance / s, 8, 1e-14) << s;
+    const Pose flush = Pose::from_translation(Vec3(2, 0.5, 0) * s);  // faces touching exactly
+    EXPECT_TRUE(mink::intersect(a, Pose::identity(), b, flush).intersect) << s;
+    const auto c =
+        mink::contact(a, Pose::identity(), b, Pose::from_translation(Vec3(1.5, 0.1, 0) * s));
+    ASSERT_EQ(c.status, mink::Status::Intersecting) << s;
+    EXPECT_NEAR(c.depth / s, 0.5, 1e-14) << s;
+    const mink::Point p{Vec3(3, 4, 0) * s};
+    EXPECT_NEAR(p.bounding_radius() / s, 5, 1e-15) << s;
+    const mink::Segment seg{Vec3(0, 0, 0), Vec3(0, 3, 4) * s};
+    EXPECT_NEAR(seg.bounding_radius() / s, 5, 1e-15) << s;
+    const auto pd = mink::distance(p, Pose::identity(), a, Pose::identity());
+    ASSERT_EQ(pd.status, mink::Status::Separated) << s;
+    EXPECT_NEAR(pd.distance / s, std::sqrt(2.0 * 2 + 3.0 * 3), 1e-14) << s;
+  }
+}
+
+// A rotation orthonormal only to 7e-7 (pose_error() accepts 1e-6): B is 1.15e-6 from A. The
+// common-point proof of box_box_verdict() once checked A's point in B's frame by r's transpose,
+// which is not its inverse here, and called the boxes intersecting while distance() did not.
+TEST(GjkNasty, BoxesUnderANearlyOrthonormalRotationAgree) {
+  const Box a{Vec3(0x1.9be6cdd0d1495p-4, 0, 0x1.a9fb2e4bc6a34p-6)};
+  const Box b{Vec3(0x1.f5850458e49dfp+1, 0x1.48b0485c1e311p+2, 0x1.8e8fe02f6332ep+0)};
+  Pose pb;
+  pb.rotation << 0x1.5c76910a57127p-18, -0x1.6dfbf6f873a44p-22, -0x1.000001f0309c5p+0,
+      0x1.fffffbbcb26fp-1, 0x1.898f99439afep-20, 0x1.5d245892c0d19p-18, 0x1.8d106516590d3p-20,
+      -0x1.fffff9cf507fap-1, 0x1.dbe995d7fc05p-27;
+  pb.translation = Vec3(-0x1.0ea02a34cd79ep-26, 0x1.a683ec2be8cbcp-34, 0x1.4a5a446142608p+2);
+  ASSERT_EQ(mink::pose_error(pb), nullptr);
+  const auto d = mink::distance(a, Pose::identity(), b, pb);
+  ASSERT_EQ(d.status, mink::Status::Separated);
+  EXPECT_NEAR(d.distance, 1.146e-6, 1e-9);
+  EXPECT_FALSE(mink::intersect(a, Pose::identity(), b, pb).intersect);
+}
+
 TEST(GjkNasty, ParallelFacesAndEdges) {
   const Box a{Vec3(1, 1, 1)}, b{Vec3(0.5, 2, 0.25)};
   expect_separated(a, Pose::identity(), b, at(2.0, 0.3, 0.1), 0.5, 1e-15, Vec3::UnitX());
