@@ -22,9 +22,10 @@ struct BoxT {
   /// under 1e-154: a plain norm() is inf or 0 there, and every tolerance scaled by it with it).
   S bounding_radius() const { return detail::length_of(half_extents, half_extents.squaredNorm()); }
   const char* error() const {
-    // One branch for the three (& does not short-circuit).
-    const bool valid = detail::is_length(half_extents[0]) & detail::is_length(half_extents[1]) &
-                       detail::is_length(half_extents[2]);
+    // One branch for the three (& on ints does not short-circuit).
+    const int valid = int(detail::is_length(half_extents[0])) &
+                      int(detail::is_length(half_extents[1])) &
+                      int(detail::is_length(half_extents[2]));
     return valid ? nullptr : "box half_extents must be finite and >= 0";
   }
 };

@@ -20,7 +20,8 @@ struct CapsuleT {
   S core_radius() const { return radius; }
   S bounding_radius() const { return radius + half_height; }
   const char* error() const {
-    if (detail::is_length(radius) & detail::is_length(half_height)) return nullptr;  // one branch
+    // One branch for both (& on ints does not short-circuit).
+    if (int(detail::is_length(radius)) & int(detail::is_length(half_height))) return nullptr;
     if (!detail::is_length(radius)) return "capsule radius must be finite and >= 0";
     if (!detail::is_length(half_height)) return "capsule half_height must be finite and >= 0";
     return nullptr;
