@@ -218,8 +218,8 @@ BoxBoxVerdict box_edge_verdict(const BoxPairAxes<S>& axes, S gap, bool apart) {
 
 /// Whether B's point x (in B's frame, inside B: half extents hb) lies within `gap` (unit: length)
 /// of box A (half extents ha), B being at (r, t) in A's frame: a point of B that close to A proves
-/// that the boxes count as intersecting, at the cost of one point's transform. x is taken to A's
-/// frame as r x + t, the map of B's support points, so the proof holds for r as given (to
+/// that the boxes count as intersecting, at the cost of one or two points' transforms. x is taken
+/// to A's frame as r x + t, the map of B's support points, so the proof holds for r as given (to
 /// rounding), even when r is orthonormal only to the 1e-6 that pose_error() allows; checking a
 /// point of A in B's frame would need r's inverse, not its transpose. Each coordinate may exceed
 /// A's extent by gap / sqrt(3), which bounds the distance by gap, with no squares to underflow. (A
