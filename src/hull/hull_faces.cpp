@@ -628,6 +628,50 @@ bool FaceBuilder::run(PolygonFaces& out, std::string& error) {
     }
   }
   for (std::size_t v = 0; v < v_count; ++v) kept[v] = changes[v] >= 3;
+  // ... and every corner of a boundary between two regions: regions are flat only within the
+  // tolerance, so two of them can share a chain that bends (the rim of a disk 1e-9 thick, whose
+  // top and bottom are one region each). Each run of left-out vertices along a loop must lie
+  // within the tolerance of the chord between the kept vertices at its ends; the farthest one
+  // that does not is kept (Douglas-Peucker), until every run fits. A vertex is on the loops of
+  // both regions, so a corner kept for one loop splits a run of the other: repeat until no loop
+  // changes (each pass keeps one more vertex or ends).
+  for (std::size_t pass = 0; pass <= v_count; ++pass) {
+    bool changed = false;
+    for (std::size_t r = 0; r < r_count; ++r) {
+      const int begin = region_loop_start[r], end = region_loop_start[r + 1];
+      const int n = end - begin;
+      auto vertex_at = [&](int i) { return region_loop[std::size_t(begin + (i % n))]; };
+      auto is_kept = [&](int i) { return kept[std::size_t(vid(vertex_at(i)))] != 0; };
+      int first = 0;
+      while (first < n && !is_kept(first)) ++first;
+      if (first == n) continue;  // no corner yet: the rule below keeps them all
+      for (int a = first; a < first + n;) {
+        int b = a + 1;
+        while (!is_kept(b)) ++b;
+        // The run a+1 .. b-1 against the chord from a's vertex to b's.
+        const Vec3 pa = q_[std::size_t(vertex_at(a))], chord = q_[std::size_t(vertex_at(b))] - pa;
+        const double chord_sq = chord.squaredNorm();
+        double worst = tol_ * tol_;
+        int worst_i = -1;
+        for (int i = a + 1; i < b; ++i) {
+          const Vec3 off = q_[std::size_t(vertex_at(i))] - pa;
+          const double t = chord_sq > 0 ? std::clamp(off.dot(chord) / chord_sq, 0.0, 1.0) : 0.0;
+          const double dist_sq = (off - t * chord).squaredNorm();
+          if (dist_sq > worst) {
+            worst = dist_sq;
+            worst_i = i;
+          }
+        }
+        if (worst_i >= 0) {
+          kept[std::size_t(vid(vertex_at(worst_i)))] = 1;
+          changed = true;
+          continue;  // the run from a to the new corner is checked next
+        }
+        a = b;
+      }
+    }
+    if (!changed) break;
+  }
   // ... and every vertex of a region that would otherwise keep fewer than three.
   for (std::size_t r = 0; r < r_count; ++r) {
     int count = 0;

@@ -79,13 +79,29 @@ inline std::string describe(const mink::ContactResult& r) {
 ///   - depth within `tolerance` of the oracle, and the normal optimal: h_{A-B}(normal) = depth
 ///     (the normal need not be the oracle's when several are equally good);
 ///   - point_b - point_a = -depth * normal, point_a on A's support plane along the normal and
-///     point_b on B's along -normal (the deepest points);
+///     point_b on B's along -normal (the deepest points), each on its own shape (outside_by());
 ///   - status, intersect, finite outputs, unit normal.
 /// Cases whose oracle depth is within `tolerance * size` of 0 are touching: any status but
-/// IterationLimit (which a needle may give, with an error_bound within twice the tolerance), and
-/// a depth and distance within twice the tolerance. `allow_limit` (curved cores): IterationLimit is
-/// accepted with a finite error_bound, which then widens the depth and optimality tolerances;
-/// otherwise it fails.
+/// IterationLimit (which a needle may give, with an error_bound within twice the tolerance), a
+/// depth and distance within twice the tolerance, and each point on its own shape. `allow_limit`
+/// (curved cores): IterationLimit is accepted with a finite error_bound, which then widens the
+/// depth and optimality tolerances; otherwise it fails. How far world point p lies outside the
+/// shape of support function h, as far as 26 directions (the faces, edges and corners of a cube)
+/// and `extra` tell: max of u . p - h(u) over unit u. A lower bound of p's distance from the shape
+/// (0 or less: no direction shows it outside).
+inline double outside_by(const SupportFn& h, const mink::Vec3& p, const V3& extra) {
+  const V3 x = widen(p);
+  Real worst = -std::numeric_limits<Real>::infinity();
+  auto consider = [&](const V3& u) { worst = std::max(worst, u.dot(x) - h(u)); };
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k)
+        if (i || j || k) consider(V3(Real(i), Real(j), Real(k)).normalized());
+  consider(extra);
+  consider(V3(-extra));
+  return static_cast<double>(worst);
+}
+
 inline void expect_contact_matches(Real expected, const SupportFn& ha, const SupportFn& hb,
                                    const mink::ContactResult& got, double size,
                                    double position_scale, DepthWorst& worst,
@@ -121,6 +137,10 @@ inline void expect_contact_matches(Real expected, const SupportFn& ha, const Sup
     ++worst.touching;
     EXPECT_LE(got.depth, 2 * tol) << "touching case, oracle depth " << e << "; " << describe(got);
     EXPECT_LE(got.distance, 2 * tol) << "touching case, oracle depth " << e;
+    EXPECT_LE(outside_by(ha, got.point_a, n), 2 * tolerance * scale)
+        << "point_a off A; " << describe(got);
+    EXPECT_LE(outside_by(hb, got.point_b, n), 2 * tolerance * scale)
+        << "point_b off B; " << describe(got);
     return;
   }
   ++worst.penetrating;
@@ -161,6 +181,10 @@ inline void expect_contact_matches(Real expected, const SupportFn& ha, const Sup
   worst.support = std::max({worst.support, off_a, off_b});
   EXPECT_LE(off_a, tolerance) << "point_a is not A's deepest point along the normal";
   EXPECT_LE(off_b, tolerance) << "point_b is not B's deepest point along -normal";
+  EXPECT_LE(outside_by(ha, got.point_a, n), slack + tolerance * scale)
+      << "point_a off A; " << describe(got);
+  EXPECT_LE(outside_by(hb, got.point_b, n), slack + tolerance * scale)
+      << "point_b off B; " << describe(got);
 }
 
 // ---- World support functions of the shapes, from their definitions (not from mink) ----

@@ -16,8 +16,8 @@
 /// rounded boxes) whose cores overlap skip GJK and EPA: the separating axis test
 /// (query/box_box.hpp) gives the same depth and normal to rounding, and `iterations` is 0; so
 /// do boxes whose cores are apart with closest points that its best axis gives in closed form
-/// (box_box_closest()). A sphere or point against a box (or rounded box) is a closed form
-/// throughout, inside the box or not (query/point_box.hpp).
+/// (box_box_closest()). A sphere or point against a box or cylinder (or their rounded versions)
+/// is a closed form throughout, inside the solid or not (query/point_solid.hpp).
 ///
 /// Ties: when several normals are equally good the query returns one of them and sets
 /// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric
@@ -39,7 +39,7 @@
 #include "mink/gjk/distance.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/manifold/clip_box_pair.hpp"
-#include "mink/query/point_box.hpp"
+#include "mink/query/point_solid.hpp"
 
 namespace mink {
 
@@ -123,14 +123,14 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       return result;
     }
   }
-  if constexpr (detail::kPointBox<A, B>) {
-    // A sphere or point against a box, inside it or not: closed form, no GJK or EPA.
-    const auto local = detail::point_box_local(a, pose_a, b, pose_b);
+  if constexpr (detail::kPointSolid<A, B>) {
+    // A sphere or point against a box or cylinder, inside it or not: closed form, no GJK or EPA.
+    const auto local = detail::point_solid_local(a, pose_a, b, pose_b);
     if (!(std::abs(local.signed_distance) <= std::numeric_limits<S>::max())) {
       result.error = detail::kOverflowError;
       return result;
     }
-    const auto cores = detail::point_box_world<A, B>(local, pose_a, pose_b);
+    const auto cores = detail::point_solid_world<A, B>(local, pose_a, pose_b);
     detail::contact_from_cores(cores.on_a, cores.on_b, cores.normal, cores.distance, radius_a,
                                radius_b, inside, result);
     result.normal_chosen = cores.tie;
@@ -250,8 +250,17 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   result.depth = std::max(S(0), epa.depth) + radius_a + radius_b;
   result.error_bound = std::max(S(0), epa.upper - epa.lower);
   result.normal = pose_a.rotate(n);
-  result.point_a = pose_a.apply(epa.a + radius_a * n);
-  result.point_b = pose_a.apply(epa.b - radius_b * n);
+  Vec3T<S> on_a = epa.a, on_b = epa.b;
+  if (gjk.upper <= touch && !(epa.depth > touch)) {
+    // Cores that touch: GJK's closest points, within `touch` of each other, are points of both
+    // cores. EPA's come from its nearest face, which for a plate touching a wall 1e5 times its
+    // size is a sliver that the origin lies beside: its points were split across the gap, and
+    // A's landed 5 % of A's size off A.
+    gjk.simplex.witness_points(on_a, on_b);
+    detail::line_up_witness_points(gjk.simplex, gjk.v, on_a, on_b);
+  }
+  result.point_a = pose_a.apply(on_a + radius_a * n);
+  result.point_b = pose_a.apply(on_b - radius_b * n);
   result.normal_chosen = epa.degenerate;
   result.status =
       epa.status == Status::IterationLimit ? Status::IterationLimit : Status::Intersecting;

@@ -708,8 +708,24 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     // along the normal n of the least support value h seen always separates the shapes. That is
     // the answer; `upper - depth` (error_bound) says how good, and decides the status.
     out.normal = least.normal;
-    out.a = least.vertex.a;
-    out.b = least.vertex.a - least.value * least.normal;
+    // One support point is held and the other placed from it, depth away along the normal: the
+    // side whose points on the face vary less, whose support is sharp there. A cylinder's support
+    // along a normal across its axis is a whole segment, a sphere's core one point: placed from
+    // the cylinder's rim, the sphere's point landed 0.8 of the size off the sphere.
+    S spread_a = S(0), spread_b = S(0);
+    for (int k = 1; k < 3; ++k) {
+      const SimplexVertexT<S>& v = ws.vertices[holder_v[k]];
+      const SimplexVertexT<S>& v0 = ws.vertices[holder_v[0]];
+      spread_a = std::max(spread_a, (v.a - v0.a).squaredNorm());
+      spread_b = std::max(spread_b, (v.b - v0.b).squaredNorm());
+    }
+    if (spread_b < spread_a) {
+      out.b = least.vertex.b;
+      out.a = least.vertex.b + least.value * least.normal;
+    } else {
+      out.a = least.vertex.a;
+      out.b = least.vertex.a - least.value * least.normal;
+    }
     if (least.value - depth > gain_tol && out.status == Status::Intersecting)
       out.status = Status::IterationLimit;
     out.depth = least.value;

@@ -25,7 +25,7 @@
 ///
 /// Pairs of spheres, capsules, points and segments (and their Rounded versions) take a closed form
 /// instead of GJK (segment_cores.hpp): exact to rounding, 0 iterations; so do spheres and points
-/// against boxes (query/point_box.hpp). Pairs of boxes (and
+/// against boxes and cylinders (query/point_solid.hpp). Pairs of boxes (and
 /// rounded boxes) report 0 iterations too when the separating axis test proves them overlapping,
 /// or when its best axis gives their closest points in closed form (a vertex, edge or face over a
 /// face, or two crossing edges: box_box_closest() in query/box_box.hpp). For other cores with no
@@ -39,7 +39,7 @@
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/separation.hpp"
 #include "mink/query/box_box.hpp"
-#include "mink/query/point_box.hpp"
+#include "mink/query/point_solid.hpp"
 
 namespace mink {
 
@@ -117,9 +117,9 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.point_b += pose_a.translation;
     return result;
   }
-  if constexpr (detail::kPointBox<A, B>) {
-    // A sphere or point against a box: closed form, no iteration.
-    const auto local = detail::point_box_local(a, pose_a, b, pose_b);
+  if constexpr (detail::kPointSolid<A, B>) {
+    // A sphere or point against a box or cylinder: closed form, no iteration.
+    const auto local = detail::point_solid_local(a, pose_a, b, pose_b);
     const S radius_a = a.core_radius(), radius_b = b.core_radius();
     if (!(std::abs(local.signed_distance) <= std::numeric_limits<S>::max())) {
       result.error = detail::kOverflowError;
@@ -131,7 +131,7 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       result.intersect = true;
       return result;
     }
-    const auto cores = detail::point_box_world<A, B>(local, pose_a, pose_b);
+    const auto cores = detail::point_solid_world<A, B>(local, pose_a, pose_b);
     detail::separated_from_cores(cores.on_a, cores.on_b, cores.normal, cores.distance, radius_a,
                                  radius_b, result);
     return result;

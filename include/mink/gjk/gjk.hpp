@@ -503,6 +503,9 @@ struct GjkBooleanOutcome {
   Status status = Status::Separated;
   S upper = std::numeric_limits<S>::infinity();  ///< upper bound on the core distance
   int iterations = 0;
+  /// The loop stalled with its bounds on both sides of the touching range: `status` is
+  /// IterationLimit, and the caller decides (intersect(): the distance loop and distance()'s rule).
+  bool stalled = false;
 };
 
 /// GJK as a yes/no test: do the full shapes intersect (cores within `radius`, touching within
@@ -510,8 +513,9 @@ struct GjkBooleanOutcome {
 /// decides, and its simplex holds only the points of A - B and their directions: no witness points
 /// or weights to carry, which is most of the cost of an iteration on cheap shapes. In the rare
 /// case where the loop stalls with the bounds on both sides of `radius` (curved shapes, see the
-/// recombination in run_gjk_distance()), it hands the question to run_gjk_distance(), which has
-/// the witness points to get unstuck.
+/// recombination in run_gjk_distance(); needles, whose thin simplices round), it says so
+/// (`stalled`) and the caller hands the question to run_gjk_distance(), which has the witness
+/// points to get unstuck.
 template <ConvexShape A, ConvexShape B>
 GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>& diff,
                                                       typename A::Scalar radius,
@@ -630,12 +634,10 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>
   save_cache(
       cache, count, [&directions](int i) { return directions[i]; }, v);
   if (stalled) {
-    // The bounds straddle `inside` and this simplex cannot tighten them: let the distance loop,
-    // with its recombination and restarts, decide.
-    const GjkOutcome<S> full = run_gjk_distance(diff, radius, size, tol, nullptr);
-    out.status = full.status;
-    out.upper = full.upper;
-    out.iterations += full.iterations;
+    // The bounds straddle `inside` and this simplex cannot tighten them: the distance loop, with
+    // its recombination and restarts, decides (intersect()).
+    out.status = Status::IterationLimit;
+    out.stalled = true;
   }
   return out;
 }

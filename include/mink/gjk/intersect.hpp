@@ -12,21 +12,23 @@
 /// pairs of boxes (and rounded boxes) that the separating axis test decides
 /// (query/box_box.hpp: when the cores overlap or are clearly apart, and no two edges are parallel
 /// to within 1e-6 without being exactly parallel; a point of one core within reach of the other
-/// also proves an overlap), and spheres and points against boxes
-/// (query/point_box.hpp).
+/// also proves an overlap), and spheres and points against boxes and cylinders
+/// (query/point_solid.hpp).
 #pragma once
 
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
+#include "mink/gjk/separation.hpp"
 #include "mink/query/box_box.hpp"
-#include "mink/query/point_box.hpp"
+#include "mink/query/point_solid.hpp"
 
 namespace mink {
 
 template <class S>
 struct IntersectResultT {
   /// Separated or Intersecting when decided; IterationLimit when the cap was hit (then
-  /// `intersect` is the best guess: the upper bound on the distance was within touching range);
+  /// `intersect` is the best guess: the upper bound on the distance was within touching range)
+  /// or when GJK's bounds stayed on both sides of the touching range (then as distance() says);
   /// InvalidInput when a shape or pose is invalid (then `intersect` is false and `error` says why).
   Status status = Status::InvalidInput;
   bool intersect = false;       ///< the shapes share a point (touching within tolerance counts)
@@ -75,9 +77,9 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     detail::intersect_from_core_gap(Vec3T<S>(on_b - on_a), reach, result);
     return result;
   }
-  if constexpr (detail::kPointBox<A, B>) {
-    // A sphere or point against a box: closed form, no iteration.
-    detail::intersect_from_core_gap(detail::point_box_gap(a, pose_a, b, pose_b), reach, result);
+  if constexpr (detail::kPointSolid<A, B>) {
+    // A sphere or point against a box or cylinder: closed form, no iteration.
+    detail::intersect_from_core_gap(detail::point_solid_gap(a, pose_a, b, pose_b), reach, result);
     return result;
   }
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
@@ -97,6 +99,25 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const auto gjk = detail::run_gjk_boolean(diff, radius, size, tolerances, cache);
+  if (gjk.stalled) [[unlikely]] {
+    // The distance loop and distance()'s rule decide, so that the two never disagree: the
+    // distance loop's own Separated is not a proof (a needle 1e-8 thick that a box penetrated by
+    // 3e-9 came out Separated here, and IterationLimit from distance()).
+    const auto full = detail::run_gjk_distance(diff, radius, size, tolerances, nullptr);
+    result.iterations = gjk.iterations + full.iterations;
+    if (full.status == Status::InvalidInput) {
+      result.error = detail::kOverflowError;
+      return result;
+    }
+    if (full.status == Status::Intersecting || full.upper <= reach) {
+      result.status = Status::Intersecting;
+    } else {
+      result.status =
+          detail::separate_cores(diff, full, radius, size, tolerances, result.iterations).status;
+    }
+    result.intersect = result.status == Status::Intersecting;
+    return result;
+  }
   result.status = gjk.status;
   result.iterations = gjk.iterations;
   if (gjk.status == Status::InvalidInput) {

@@ -98,7 +98,7 @@ void find_separation(const CoreDifference<A, B>& diff, const GjkOutcome<typename
   // Turning both about their midpoint instead moved a polytope's vertex off the polytope by
   // half the gap times the turn (8e-8 for a turn of 8e-6).
   const Vec3T<S> offset = out.on_b - out.on_a;
-  const S gap = length_of(offset, S(offset.squaredNorm()));
+  const S gap = length_of(offset);
   const S below_a = out.normal.dot(least.vertex.a - out.on_a);
   const S above_b = out.normal.dot(out.on_b - least.vertex.b);
   if (above_b <= below_a)

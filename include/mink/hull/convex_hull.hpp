@@ -49,7 +49,10 @@
 ///      the largest local coordinate; no margin when the normal is an axis); with another
 ///      normal, the exact maximum found by an exact hill climb over the convex triangulation.
 ///      Vertices where fewer than three faces meet (points inside a face or on an edge of it)
-///      are left out of the face loops, unless a face would keep fewer than three.
+///      are left out of the face loops, unless a face would keep fewer than three, or the
+///      boundary between two faces bends there: faces are flat only within `tolerance`, so two
+///      of them can share a bent chain (the rim of a disc 1e-9 thick), and every vertex left
+///      out of such a chain lies within `tolerance` of the chord between the kept ones.
 ///   5. Output. Offsets are converted to input units with exact arithmetic and rounded up.
 ///
 /// Guarantees (complete builds; `tolerance` is ConvexHull::tolerance, in input units):
@@ -60,7 +63,7 @@
 ///     along its normal (exact signs on the input points);
 ///   - the faces form a closed polyhedron: every half-edge has a twin in another face, V - E + F
 ///     = 2, every vertex is an input point shared by at least three faces (or two, when a face
-///     would otherwise have fewer than three vertices);
+///     would otherwise have fewer than three vertices, or at a bend of their common boundary);
 ///   - every point of the exact hull that is not a vertex (because it is not extreme, or because
 ///     it was dropped as above) lies within `tolerance` of a face plane.
 /// Flat, segment and point results: see HullStatus.

@@ -45,7 +45,7 @@ bool make_orthogonal(Vec3T<S>& n, const Vec3T<S>& e1, const Vec3T<S>& e2) {
   if (ee2 > S(0)) m -= e2 * (m.dot(e2) / ee2);
   const S mm = m.squaredNorm();
   const S length = length_of(m, mm);
-  if (!(length > S(1e-3) * length_of(n, S(n.squaredNorm())))) return false;
+  if (!(length > S(1e-3) * length_of(n))) return false;
   n = unit_of(m, mm, length);
   return true;
 }

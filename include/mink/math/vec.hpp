@@ -47,6 +47,12 @@ S length_of(const Vec3T<S>& v, S v_sq) {
              : v.stableNorm();
 }
 
+/// |v| at any magnitude.
+template <class S>
+S length_of(const Vec3T<S>& v) {
+  return length_of(v, S(v.squaredNorm()));
+}
+
 /// v / |v| for v != 0, given v_sq = v.squaredNorm() and length = length_of(v, v_sq). Where the
 /// square underflows or overflows, v is divided by its largest component first: 1 / |v| overflows
 /// below 1e-308, and a subnormal |v| carries too few digits for the plain quotient to be unit (so

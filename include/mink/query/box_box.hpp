@@ -83,9 +83,11 @@ template <class S>
                                                  const AbsRotation<S>& abs_r, const Mat3T<S>& r,
                                                  const Vec3T<S>& t, BoxPairAxes<S>& out) {
   for (int i = 0; i < 3; ++i) out.face_overlap[i] = box_face_overlap_a(i, ha, hb, abs_r, t);
+  // As box_box_verdict() computes it: the same offsets to the last bit.
+  const Vec3T<S> offset_along_b = r.transpose() * t;
   for (int j = 0; j < 3; ++j) {
-    out.offset_along_b[j] = r.col(j).dot(t);
-    out.face_overlap[3 + j] = box_face_overlap_b(j, ha, hb, abs_r, out.offset_along_b[j]);
+    out.offset_along_b[j] = offset_along_b[j];
+    out.face_overlap[3 + j] = box_face_overlap_b(j, ha, hb, abs_r, offset_along_b[j]);
   }
 }
 

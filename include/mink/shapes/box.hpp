@@ -20,7 +20,7 @@ struct BoxT {
   S core_radius() const { return S(0); }
   /// |half_extents|, also where its square overflows or underflows (half extents beyond 1e154 or
   /// under 1e-154: a plain norm() is inf or 0 there, and every tolerance scaled by it with it).
-  S bounding_radius() const { return detail::length_of(half_extents, half_extents.squaredNorm()); }
+  S bounding_radius() const { return detail::length_of(half_extents); }
   const char* error() const {
     // One branch for the three (& on ints does not short-circuit).
     const int valid = int(detail::is_length(half_extents[0])) &

@@ -15,7 +15,7 @@ struct PointT {
   Vec3T<S> support_core(const Vec3T<S>&) const { return position; }
   S core_radius() const { return S(0); }
   S bounding_radius() const {  // at any magnitude (length_of())
-    return detail::length_of(position, position.squaredNorm());
+    return detail::length_of(position);
   }
   const char* error() const { return is_finite(position) ? nullptr : "point is not finite"; }
 };

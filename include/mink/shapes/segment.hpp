@@ -18,7 +18,7 @@ struct SegmentT {
   Vec3T<S> support_core(const Vec3T<S>& d) const { return d.dot(b - a) > S(0) ? b : a; }
   S core_radius() const { return S(0); }
   S bounding_radius() const {  // at any magnitude (length_of())
-    return std::max(detail::length_of(a, a.squaredNorm()), detail::length_of(b, b.squaredNorm()));
+    return std::max(detail::length_of(a), detail::length_of(b));
   }
   const char* error() const {
     return is_finite(a) && is_finite(b) ? nullptr : "segment points are not finite";

@@ -542,6 +542,105 @@ TEST(ContactNasty, CoaxialConesTie) {
   expect_tied_depth(cone, turned, capsule, turned, 0.1 + 2.2 / std::sqrt(17.0), size);
 }
 
+TEST(ContactNasty, PlateTouchingAHugeWallKeepsItsPointsOnBoth) {
+  // A plate 1 across and 1.6e-6 thick touching a wall 1e5 across, 5.7e-13 apart (found by an
+  // adversarial sweep): touching within tolerance, so GJK and EPA decide rather than the box
+  // closed forms. EPA's nearest face was a sliver the origin lay beside, and its witness points,
+  // split across the gap, put A's point 0.035 off A (5 % of A's size). Each point must lie on its
+  // own box (signed distance by the boxes' equations, in long double).
+  const Vec3 ha(0x1.8975b57c60c39p-2, 0x1.10d9a9b77b4ep-1, 0x1.af1d3c8ebf3a4p-21);
+  const Vec3 hb(0x1.20feea0ec80d8p+14, 0x1.c9063d1f68472p-6, 0x1.a479466545ed6p+15);
+  const double ra[9] = {0x1.c233eac9e7085p-1,  -0x1.d8b627e9bda6p-2,  -0x1.dfd361aaf3c6ap-4,
+                        0x1.bc207160b4f62p-4,  -0x1.747c76061528p-5,  0x1.fc72d9c79e6dp-1,
+                        -0x1.dae3161d5b4f4p-2, -0x1.c5955edac6366p-1, 0x1.4a1306ef3c1cp-7};
+  const double rb[9] = {0x1.3d37c6a3bfef6p-1,  0x1.7688b6c1cd16cp-1, -0x1.237c81c7ce36p-2,
+                        -0x1.bb6d5b01ffd7ap-3, -0x1.83b3d8925f34p-3, -0x1.ea5e0e5f28634p-1,
+                        -0x1.824cc471d7e98p-1, 0x1.4f5ef6c322db8p-1, 0x1.50a8cbedaa61p-5};
+  Pose pa, pb;
+  for (int i = 0; i < 9; ++i) {
+    pa.rotation(i / 3, i % 3) = ra[i];
+    pb.rotation(i / 3, i % 3) = rb[i];
+  }
+  pa.translation = Vec3(-0x1.c0d7f5b925632p-6, 0x1.0219e10c323a5p-4, 0x1.00fef93193feep-4);
+  pb.translation = Vec3(0x1.300c30f9e4eb8p+14, 0x1.65fc982a5dee7p+14, -0x1.d8334b851d929p+13);
+  const mink::Box a{ha}, b{hb};
+  const double size = a.bounding_radius() + b.bounding_radius();
+  // Signed distance of world point w to a posed box, in long double.
+  auto signed_distance = [](const Vec3& half, const Pose& pose, const Vec3& w) {
+    using L = long double;
+    L outside = 0, inside = -std::numeric_limits<L>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      L local = 0;
+      for (int k = 0; k < 3; ++k)
+        local += L(pose.rotation(k, i)) * (L(w[k]) - L(pose.translation[k]));
+      const L q = std::abs(local) - L(half[i]);
+      outside += q > 0 ? q * q : 0;
+      inside = std::max(inside, q);
+    }
+    return double(outside > 0 ? std::sqrt(outside) : inside);
+  };
+  for (const bool swap : {false, true}) {
+    SCOPED_TRACE(swap);
+    const auto r = swap ? mink::contact(b, pb, a, pa) : mink::contact(a, pa, b, pb);
+    EXPECT_EQ(r.status, mink::Status::Intersecting) << oracle::describe(r);
+    EXPECT_LE(r.depth, 1e-12 * size);
+    const Vec3 on_a = swap ? r.point_b : r.point_a, on_b = swap ? r.point_a : r.point_b;
+    // Rounding of world coordinates of 1e5: a few eps of that.
+    const double tol = 1e-15 * size;
+    EXPECT_LE(std::abs(signed_distance(ha, pa, on_a)), tol) << oracle::describe(r);
+    EXPECT_LE(std::abs(signed_distance(hb, pb, on_b)), tol) << oracle::describe(r);
+    EXPECT_LE((r.point_b - r.point_a + r.depth * r.normal).norm(), 1e-12 * size);
+  }
+}
+
+TEST(ContactNasty, SphereOnTheAxisOfACylinderOrCone) {
+  // A sphere centred on the axis of a cylinder or cone, nearer the side than the caps: every
+  // radial direction is a best normal, EPA ends at its cap, and the witness points come from the
+  // least support value seen. They were placed from the cylinder's support point, a rim point
+  // (the support along a radial direction is a whole segment of the side), and the sphere's
+  // point landed 0.85 outside the sphere. Checked here: each point inside its own shape (by the
+  // shapes' equations), on its surface along the normal, and the depth.
+  const double r = 0.05;
+  const mink::Sphere sphere{r};
+  const mink::Cylinder cylinder{0.3, 1.0};
+  const mink::Cone cone{1.0, 0.5};
+  auto inside_cylinder = [&](const Vec3& p, double tol) {
+    return std::hypot(p.x(), p.y()) <= cylinder.radius + tol &&
+           std::abs(p.z()) <= cylinder.half_height + tol;
+  };
+  auto inside_cone = [&](const Vec3& p, double tol) {
+    const double h = cone.half_height;
+    return std::abs(p.z()) <= h + tol &&
+           std::hypot(p.x(), p.y()) <= cone.radius * (h - p.z()) / (2 * h) + tol;
+  };
+  for (const double z : {0.0, 0.1, -0.3}) {
+    SCOPED_TRACE(z);
+    const Vec3 c(0, 0, z);
+    const double size = r + std::hypot(cylinder.radius, cylinder.half_height);
+    const double tol = 1e-9 * size;
+    for (const bool swap : {false, true}) {
+      const auto res = swap ? expect_tied_depth(sphere, at(0, 0, z), cylinder, Pose::identity(),
+                                                r + cylinder.radius, size)
+                            : expect_tied_depth(cylinder, Pose::identity(), sphere, at(0, 0, z),
+                                                r + cylinder.radius, size);
+      const Vec3 on_sphere = swap ? res.point_a : res.point_b;
+      const Vec3 on_cylinder = swap ? res.point_b : res.point_a;
+      EXPECT_NEAR((on_sphere - c).norm(), r, tol) << oracle::describe(res);
+      EXPECT_TRUE(inside_cylinder(on_cylinder, tol)) << oracle::describe(res);
+      EXPECT_NEAR(std::hypot(on_cylinder.x(), on_cylinder.y()), cylinder.radius, tol)
+          << oracle::describe(res);
+    }
+    // The cone's side, (1, 1) / sqrt(2) in (rho, z), is 0.5 / sqrt(2) - z / sqrt(2) from c.
+    const double cone_size = r + std::hypot(cone.radius, cone.half_height);
+    const double side = (0.5 - z) / std::sqrt(2.0);
+    if (side >= cone.half_height + z) continue;  // the base is nearer: no tie
+    const auto res =
+        expect_tied_depth(cone, Pose::identity(), sphere, at(0, 0, z), r + side, cone_size);
+    EXPECT_NEAR((res.point_b - c).norm(), r, 1e-9 * cone_size) << oracle::describe(res);
+    EXPECT_TRUE(inside_cone(res.point_a, 1e-9 * cone_size)) << oracle::describe(res);
+  }
+}
+
 TEST(ContactNasty, ConesMeetingAtKinks) {
   // Found by the curved-shape sweep (tests/slow/): a flat cone's apex in a needle cone's, coaxial
   // and opposed. The best normals form a circle where the flat cone's support switches from apex

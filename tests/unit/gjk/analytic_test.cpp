@@ -5,13 +5,16 @@
 #include "mink/mink.hpp"
 #include "oracle/analytic.hpp"
 #include "oracle/check.hpp"
+#include "oracle/penetration.hpp"
 #include "oracle/random.hpp"
 
 namespace {
 
 using mink::Pose;
 using mink::Vec3;
+using oracle::Real;
 using oracle::Rng;
+using oracle::V3;
 using oracle::widen;
 
 /// A signed gap for a random case relative to `size`: mostly log-uniform separations over eight
@@ -150,6 +153,50 @@ TEST(GjkDistance, SphereBoxMatchesAnalytic) {
     const auto got = mink::distance(sphere, pa, box, pb);
     const auto got_bool = mink::intersect(sphere, pa, box, pb);
     oracle::expect_matches(expected, got, got_bool, size, pb.translation.norm(), true, worst);
+  }
+}
+
+TEST(GjkDistance, SphereCylinderMatchesAnalytic) {
+  // A closed form (query/point_solid.hpp): centres all around the cylinder, some inside it and
+  // some on its axis, the cylinder A or B.
+  const std::uint64_t base = 6000;
+  const int n = oracle::sweep_count(3000);
+  oracle::Worst worst("sphere-cylinder");
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const mink::Cylinder cyl{rng.log_uniform(0.01, 2), rng.log_uniform(0.01, 2)};
+    const mink::Sphere sphere{rng.log_uniform(0.01, 2)};
+    const double size = std::hypot(cyl.radius, cyl.half_height) + sphere.radius;
+    const Pose pb = rng.pose(5);
+    Vec3 offset = rng.in_ball(1.5 * size);
+    if (i % 5 == 0) offset = Vec3(0, 0, offset.z());  // on the axis
+    const Pose pa = Pose::from(pb.apply(offset), rng.rotation());
+    const oracle::WorldCylinder wc{cyl.radius, cyl.half_height, widen(pb.rotation),
+                                   widen(pb.translation)};
+    const V3 c = widen(pa.translation);
+    const auto pen = oracle::sphere_cylinder_penetration(c, sphere.radius, wc);
+    oracle::Answer expected;
+    expected.gap = -pen.depth;
+    expected.distance = std::max(Real(0), expected.gap);
+    if (expected.gap > 0) {  // the centre is outside: normal from it to the nearest point
+      expected.normal = pen.normal;
+      expected.point_a = c + Real(sphere.radius) * pen.normal;
+      expected.point_b = c + (Real(sphere.radius) + expected.gap) * pen.normal;
+    }
+    const auto got = mink::distance(sphere, pa, cyl, pb);
+    const auto got_bool = mink::intersect(sphere, pa, cyl, pb);
+    EXPECT_EQ(got.iterations, 0);
+    oracle::expect_matches(expected, got, got_bool, size, pb.translation.norm(), true, worst);
+    // Swapped: the same distance, the normal and points swapped.
+    const auto swapped = mink::distance(cyl, pb, sphere, pa);
+    EXPECT_EQ(swapped.intersect, got.intersect);
+    EXPECT_NEAR(swapped.distance, got.distance, 1e-15 * size);
+    if (!got.intersect) {
+      EXPECT_LE((swapped.normal + got.normal).norm(), 1e-12);
+      EXPECT_LE((swapped.point_a - got.point_b).norm(), 1e-14 * (size + pb.translation.norm()));
+    }
   }
 }
 

@@ -13,6 +13,8 @@
 #include "mink/mink.hpp"
 #include "oracle/brute_force.hpp"
 #include "oracle/check.hpp"
+#include "oracle/contact_check.hpp"
+#include "oracle/penetration.hpp"
 #include "oracle/random.hpp"
 
 namespace {
@@ -509,6 +511,59 @@ TEST(GjkNasty, TinySegmentBesideAHugeOneKeepsItsNormal) {
       }
     }
   }
+}
+
+TEST(GjkNasty, BoxInANeedleAgreesWithDistance) {
+  // A box 1e-6 across sunk 3.3e-9 into a needle polytope 1e-8 thick and 0.83 long (found by an
+  // adversarial sweep). The boolean loop stalls on the needle's thin simplices and hands over to
+  // the distance loop, whose own Separated is not a proof: intersect() answered Separated, a
+  // definite wrong status, where distance() says IterationLimit. Now both follow distance()'s
+  // rule, and contact() finds the depth of the facet oracle.
+  const Box box{Vec3(0x1.423973685ebeap-21, 0x1.8ca8f37c9f2c9p-21, 0x1.cc34c1ea11c12p-22)};
+  const std::vector<Vec3> needle = {
+      {-0x1.7109ae84d7314p-3, -0x1.afa25fd2bac68p-28, -0x1.c13a9420c5d99p-28},
+      {-0x1.77ed8141ee4e4p-1, -0x1.efd0fc2485ec7p-29, 0x1.8632001a13b37p-28},
+      {-0x1.3add35af7186fp-8, -0x1.291151d2f4164p-28, 0x1.a4658940facb2p-34},
+      {0x1.4cbf8bb839284p-2, -0x1.a966dbee31ee9p-28, -0x1.52c6c53abb4b5p-28},
+      {-0x1.aa29dea33f4ebp-1, -0x1.aacfd9d3214cp-29, -0x1.7f3e7c79c30b6p-30},
+      {0x1.d516ea3d00dap-2, 0x1.a7b1772a50bbcp-32, -0x1.f6bfdb7b749fap-32},
+      {0x1.81d3aeafb1b8bp-2, -0x1.193ec3030e267p-28, 0x1.ab480838dc137p-28}};
+  const auto polytope = mink::Polytope::make(needle);
+  ASSERT_TRUE(polytope.has_value());
+  const double ra[9] = {
+      0x1p+0, -0x1.024ffbdac3febp-42, -0x1.5908cc3903962p-39, 0x1.024ffbdad0d93p-42,
+      0x1p+0, 0x1.312ce79c7968fp-40,  0x1.5908cc39036fap-39,  -0x1.312ce79c7a171p-40,
+      0x1p+0};
+  const double rb[9] = {0x1.ce20d4591f0cp-6,  0x1.fec3a292241d4p-1, 0x1.03e470c0c4f3ep-4,
+                        0x1.b05444d169df4p-1, -0x1.d916e6dfe154p-5, 0x1.10b14937bf7e2p-1,
+                        0x1.11e9125e30d13p-1, 0x1.3bd650783212p-5,  -0x1.b01ea2eadaa74p-1};
+  Pose pa, pb;
+  for (int i = 0; i < 9; ++i) {
+    pa.rotation(i / 3, i % 3) = ra[i];
+    pb.rotation(i / 3, i % 3) = rb[i];
+  }
+  pa.translation = Vec3(0x1.01a31496fc98p-7, -0x1.1e5d61bbc2a68p-4, 0x1.53e3d77b5528ep-5);
+  pb.translation = Vec3(0x1.42650cfce1094p-7, -0x1.5fbc1caab935ep-7, 0x1.438647b1bb896p-4);
+  const double size = box.bounding_radius() + polytope->bounding_radius();
+
+  std::vector<Vec3> corners;
+  for (int i = 0; i < 8; ++i)
+    corners.emplace_back(i & 1 ? box.half_extents.x() : -box.half_extents.x(),
+                         i & 2 ? box.half_extents.y() : -box.half_extents.y(),
+                         i & 4 ? box.half_extents.z() : -box.half_extents.z());
+  const double depth = double(oracle::polytope_penetration(oracle::world_points(corners, pa),
+                                                           oracle::world_points(needle, pb))
+                                  .depth);
+  ASSERT_GT(depth, 1e-9 * size);  // penetrating, well beyond the touching tolerance
+
+  const auto i = mink::intersect(box, pa, *polytope, pb);
+  const auto d = mink::distance(box, pa, *polytope, pb);
+  EXPECT_NE(i.status, mink::Status::Separated);
+  EXPECT_EQ(i.status, d.status);
+  EXPECT_EQ(i.intersect, d.intersect);
+  const auto c = mink::contact(box, pa, *polytope, pb);
+  EXPECT_TRUE(c.intersect);
+  EXPECT_NEAR(c.depth, depth, 1e-12 * size + c.error_bound);
 }
 
 }  // namespace

@@ -108,6 +108,33 @@ std::vector<Vec3> needle(int n, unsigned seed) {
   return p;
 }
 
+/// Points in the unit disk, `thickness` apart at most across it: a solid so thin that the
+/// dihedral angle at its rim is about thickness / spacing, so a face-plane tolerance reaches far
+/// beyond the rim (hull_faces.cpp keeps the rim's corners for that).
+std::vector<Vec3> thin_disk(int n, unsigned seed, double thickness) {
+  std::mt19937_64 g(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Vec3> p;
+  while (int(p.size()) < n) {
+    const double x = u(g), y = u(g);
+    if (x * x + y * y <= 1) p.emplace_back(x, y, 0.5 * thickness * u(g));
+  }
+  return p;
+}
+
+/// Two circles of radius 1 at z = +-0.5 with every coordinate moved by up to `noise`.
+std::vector<Vec3> noisy_rims(int n, unsigned seed, double noise) {
+  std::mt19937_64 g(seed);
+  std::uniform_real_distribution<double> u(-1, 1), a(0, 6.283185307179586);
+  std::vector<Vec3> p;
+  for (int i = 0; i < n; ++i) {
+    const double t = a(g);
+    p.emplace_back(std::cos(t) + noise * u(g), std::sin(t) + noise * u(g),
+                   (i % 2 ? 0.5 : -0.5) + noise * u(g));
+  }
+  return p;
+}
+
 struct Case {
   std::string name;
   std::vector<Vec3> points;
@@ -190,6 +217,12 @@ std::vector<Case> default_cases() {
   cases.push_back({"segment", segment(1000, 9), 10000});
   cases.push_back({"point", std::vector<Vec3>(10, Vec3(0.5, -1, 2)), 1000});
   cases.push_back({"needle", needle(3000, 10), 32000});
+  for (const auto& [thickness, name] : {std::pair{1e-9, "1e-9"}, {1e-7, "1e-7"}, {1e-5, "1e-5"}})
+    for (int n : {64, 2000})
+      cases.push_back({"thin disk " + std::to_string(n) + " " + name,
+                       thin_disk(n, 11u + unsigned(n), thickness), 16000});
+  for (const auto& [noise, name] : {std::pair{1e-11, "1e-11"}, {1e-9, "1e-9"}})
+    cases.push_back({std::string("noisy rims ") + name, noisy_rims(400, 14, noise), 16000});
   return cases;
 }
 
