@@ -252,12 +252,16 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   result.normal = pose_a.rotate(n);
   Vec3T<S> on_a = epa.a, on_b = epa.b;
   if (gjk.upper <= touch && !(epa.depth > touch)) {
-    // Cores that touch: GJK's closest points, within `touch` of each other, are points of both
-    // cores. EPA's come from its nearest face, which for a plate touching a wall 1e5 times its
-    // size is a sliver that the origin lies beside: its points were split across the gap, and
-    // A's landed 5 % of A's size off A.
+    // Cores that touch: both points at the midpoint of GJK's closest points, which are points of
+    // the two cores within `touch` of each other up to the rounding of the simplex's weights
+    // (a few 1e-9 of a needle's length). EPA's come from its nearest face, which for a plate
+    // touching a wall 1e5 times its size is a sliver that the origin lies beside: its points
+    // were split across the gap, and A's landed 5 % of A's size off A. (GJK's points lined up
+    // as distance() does, one held and the other placed by v, moved a point touching a needle
+    // off its shape by the whole rounding.)
     gjk.simplex.witness_points(on_a, on_b);
-    detail::line_up_witness_points(gjk.simplex, gjk.v, on_a, on_b);
+    const Vec3T<S> midpoint = S(0.5) * (on_a + on_b);
+    on_a = on_b = midpoint;
   }
   result.point_a = pose_a.apply(on_a + radius_a * n);
   result.point_b = pose_a.apply(on_b - radius_b * n);

@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "mink/gjk/gjk.hpp"
+#include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/support_descent.hpp"
 #include "mink/math/orthogonal.hpp"
 
@@ -708,24 +709,45 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     // along the normal n of the least support value h seen always separates the shapes. That is
     // the answer; `upper - depth` (error_bound) says how good, and decides the status.
     out.normal = least.normal;
-    // One support point is held and the other placed from it, depth away along the normal: the
-    // side whose points on the face vary less, whose support is sharp there. A cylinder's support
-    // along a normal across its axis is a whole segment, a sphere's core one point: placed from
-    // the cylinder's rim, the sphere's point landed 0.8 of the size off the sphere.
-    S spread_a = S(0), spread_b = S(0);
-    for (int k = 1; k < 3; ++k) {
-      const SimplexVertexT<S>& v = ws.vertices[holder_v[k]];
-      const SimplexVertexT<S>& v0 = ws.vertices[holder_v[0]];
-      spread_a = std::max(spread_a, (v.a - v0.a).squaredNorm());
-      spread_b = std::max(spread_b, (v.b - v0.b).squaredNorm());
+    // The witness points: a pair of the two support features along the normal, depth apart along
+    // it. A feature may be a segment (a cylinder's side across its axis, a capsule's core) or a
+    // face, where the support point alone can be any of its points: a sphere's point placed from
+    // a cylinder's rim point landed 0.85 off the sphere, and two coaxial cylinders' points 0.37
+    // off. So the features are sampled by the support along the normal tilted by 1e-9 rad four
+    // ways (a flat feature shows its ends, a curved surface moves by 1e-9 of its radius), each
+    // taken as the segment between its two samples farthest apart, B's shifted by the depth,
+    // and the pair is their closest points: the same point twice where the features overlap
+    // seen along the normal (every tie above), else split between them.
+    const Vec3T<S>& n = least.normal;
+    const Vec3T<S> t1 = unit_of(orthogonal(n)), t2 = n.cross(t1);
+    const S kTilt = std::max(S(1e-9), S(64) * std::numeric_limits<S>::epsilon());  // float: 8e-6
+    Vec3T<S> on_a[5] = {least.vertex.a}, on_b[5] = {least.vertex.b};
+    for (int k = 0; k < 4; ++k) {
+      SimplexVertexT<S> v;
+      diff.support(n + kTilt * (k < 2 ? t1 : t2) * (k % 2 ? S(-1) : S(1)), v);
+      on_a[k + 1] = v.a;
+      on_b[k + 1] = v.b;
     }
-    if (spread_b < spread_a) {
-      out.b = least.vertex.b;
-      out.a = least.vertex.b + least.value * least.normal;
-    } else {
-      out.a = least.vertex.a;
-      out.b = least.vertex.a - least.value * least.normal;
-    }
+    out.iterations += 4;
+    auto farthest_pair = [](const Vec3T<S>(&samples)[5], Vec3T<S>& p0, Vec3T<S>& p1) {
+      S widest = S(-1);
+      for (int i = 0; i < 5; ++i)
+        for (int j = i + 1; j < 5; ++j)
+          if (const S d = (samples[i] - samples[j]).squaredNorm(); d > widest) {
+            widest = d;
+            p0 = samples[i];
+            p1 = samples[j];
+          }
+    };
+    Vec3T<S> a0, a1, b0, b1, on_a_feature, on_b_shifted;
+    farthest_pair(on_a, a0, a1);
+    farthest_pair(on_b, b0, b1);
+    const Vec3T<S> shift = least.value * n;
+    closest_points_of_segments(a0, a1, Vec3T<S>(b0 + shift), Vec3T<S>(b1 + shift), on_a_feature,
+                               on_b_shifted);
+    const Vec3T<S> split = S(0.5) * (on_a_feature - on_b_shifted);
+    out.a = on_a_feature - split;
+    out.b = on_b_shifted + split - shift;
     if (least.value - depth > gain_tol && out.status == Status::Intersecting)
       out.status = Status::IterationLimit;
     out.depth = least.value;

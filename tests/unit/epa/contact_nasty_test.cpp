@@ -593,13 +593,84 @@ TEST(ContactNasty, PlateTouchingAHugeWallKeepsItsPointsOnBoth) {
   }
 }
 
+TEST(ContactNasty, PolytopeTouchingANeedleKeepsItsPointsOnBoth) {
+  // A hull of 30 points touching a needle 1e-8 thick (found by the review of the fix above): GJK's
+  // closest points of the touching cores differ by the rounding of the simplex's weights, 7e-9,
+  // and lining them up as distance() does (one held, the other placed) moved A's point off A by
+  // all of it, 1.6e-9 of the size. Both now sit at their midpoint. Each point's distance from its
+  // own hull by the facet oracle (least support of the hull minus the point).
+  const std::vector<Vec3> a_points = {
+      {0x1.1db061b69a6cep+0, -0x1.a0a26394665f7p-1, 0x1.a148ebba67453p+0},
+      {0x1.0df61a2a71dcdp-2, -0x1.8ad7fcd971c82p-2, 0x1.0fff6f9664d5cp-2},
+      {0x1.03c45990db7b7p-1, 0x1.2962e7c5adc29p-1, -0x1.224e92ac3ebfp-3},
+      {-0x1.a60c4928138a2p+0, 0x1.345826b37ec31p-3, 0x1.278078ea9197ap+0},
+      {0x1.6bd53381f9669p-1, -0x1.3274345fc43c2p-2, -0x1.2d29f799ffd31p-2},
+      {-0x1.3d869a35ff057p+1, 0x1.d8a374bbf1817p+0, -0x1.592b7ede1bcd5p-1},
+      {0x1.64183be76a352p-3, 0x1.3024725c5e612p+1, -0x1.6f67c70c04949p-1},
+      {-0x1.2dd507cba7f25p-2, -0x1.da0d42e273d74p-1, -0x1.e1f015799c4e3p-2},
+      {0x1.31b5a3db735fbp-1, -0x1.030c083ecdd77p+0, 0x1.3287d68124d11p-7},
+      {0x1.2855c2485053ep-1, 0x1.2c66835aba29cp-1, -0x1.4f409b5134c77p-3},
+  };
+  const std::vector<Vec3> b_points = {
+      {-0x1.cc823a0ad954ap-1, -0x1.a6c3236beb74ep-26, 0x1.034d4ac9212fdp-29},
+      {-0x1.206cdb2c62bb7p-2, 0x1.4a94d24698f62p-31, 0x1.29f3183f0b413p-29},
+      {0x1.6e0cb661a0e45p-1, -0x1.b904377fc55ffp-28, -0x1.3ec3ba10c2924p-28},
+      {-0x1.deb46a925aab8p-1, 0x1.c0298dec2d8ccp-26, 0x1.81bcc26aa8902p-30},
+      {0x1.3d5dd46c1f442p+0, -0x1.e275434094768p-27, -0x1.b64059116e9a4p-28},
+      {0x1.c8647956966bbp-3, -0x1.7f57395aae301p-27, 0x1.8206106ec89d1p-29},
+      {0x1.4514c7778f036p+0, -0x1.8e843eaba3515p-29, 0x1.5c8ff0038e8d1p-28},
+      {0x1.408da8b67781bp-1, -0x1.2826503e63218p-28, -0x1.50baf79d4a7d8p-27},
+      {-0x1.c1ede5c1d5c8cp-1, 0x1.6e293822e9627p-26, -0x1.d87d5732aa821p-28},
+      {-0x1.819e8ad91c7fep-2, 0x1.65c92e7f10f94p-27, -0x1.28d382f1b52cfp-26},
+      {-0x1.0457dc7ecdbaep+0, -0x1.a000361af7341p-28, -0x1.4e10c680bffa8p-27},
+      {-0x1.1f9e7630a9c18p+0, -0x1.0ef79faa61a49p-26, -0x1.bab8a265a9a0dp-26},
+      {-0x1.144d70873941fp-2, -0x1.d5d603ab0b12ep-28, -0x1.7bb3e3a92df99p-28},
+      {-0x1.00b442a42b7abp+0, -0x1.b92e012965cb4p-28, 0x1.45297d6e45562p-28},
+      {-0x1.de89bd5fa23b3p-5, -0x1.4d1eaf488d635p-27, 0x1.0e7fbb54cd13fp-28},
+      {-0x1.1ce428be34ac5p-3, -0x1.969ad04aee09ap-28, 0x1.780ba6fb755a9p-27},
+      {-0x1.ea91dfa969a8ap-3, 0x1.2e0f2da1f34fdp-28, -0x1.43680ea7fed4bp-26},
+      {-0x1.88b5a42771c0bp-1, 0x1.a911df16742b4p-30, -0x1.e98cd7a1f3b42p-27},
+  };
+  const Pose pa = [] {
+    Pose p;
+    p.rotation << 0x1.359edb92dd432p-1, -0x1.25884fb151124p-1, -0x1.1b0d08008cbbcp-1,
+        -0x1.03c0a7bc2ca9cp-1, 0x1.07fa9bf6225c4p-2, -0x1.a5032879efc54p-1, 0x1.3a5643a12d78ep-1,
+        0x1.8e32a19ec1792p-1, -0x1.1466510884bb8p-3;
+    p.translation = Vec3(0x0p+0, 0x0p+0, 0x0p+0);
+    return p;
+  }();
+  const Pose pb = [] {
+    Pose p;
+    p.rotation << 0x1.359edb92dd432p-1, -0x1.25884fb151124p-1, -0x1.1b0d08008cbbcp-1,
+        -0x1.03c0a7bc2ca9cp-1, 0x1.07fa9bf6225c4p-2, -0x1.a5032879efc54p-1, 0x1.3a5643a12d78ep-1,
+        0x1.8e32a19ec1792p-1, -0x1.1466510884bb8p-3;
+    p.translation = Vec3(-0x1.bd09fb691b64p-2, -0x1.8cd4e02a27428p+0, -0x1.b4a9c4a697506p-1);
+    return p;
+  }();
+  const auto a = mink::Polytope::make(a_points), b = mink::Polytope::make(b_points);
+  ASSERT_TRUE(a.has_value() && b.has_value());
+  const double size = a->bounding_radius() + b->bounding_radius();
+  const auto r = mink::contact(*a, pa, *b, pb);
+  EXPECT_TRUE(r.intersect) << oracle::describe(r);
+  EXPECT_LE(r.depth, 1e-12 * size);
+  auto off = [](const std::vector<Vec3>& points, const Pose& pose, const Vec3& p) {
+    const auto depth =
+        oracle::least_support_of_difference(oracle::world_points(points, pose), {oracle::widen(p)});
+    return std::max(0.0, -double(depth));
+  };
+  EXPECT_LE(off(a_points, pa, r.point_a), 1e-9 * size) << oracle::describe(r);
+  EXPECT_LE(off(b_points, pb, r.point_b), 1e-9 * size) << oracle::describe(r);
+  EXPECT_LE((r.point_b - r.point_a + r.depth * r.normal).norm(), 1e-12 * size);
+}
+
 TEST(ContactNasty, SphereOnTheAxisOfACylinderOrCone) {
   // A sphere centred on the axis of a cylinder or cone, nearer the side than the caps: every
-  // radial direction is a best normal, EPA ends at its cap, and the witness points come from the
-  // least support value seen. They were placed from the cylinder's support point, a rim point
-  // (the support along a radial direction is a whole segment of the side), and the sphere's
-  // point landed 0.85 outside the sphere. Checked here: each point inside its own shape (by the
-  // shapes' equations), on its surface along the normal, and the depth.
+  // radial direction is a best normal. Against the cone EPA ends at its cap, and the witness
+  // points come from the least support value seen; they were placed from the cone's support
+  // point, a rim point, and the sphere's point landed 0.27 outside the sphere (against a
+  // cylinder 0.85, before the closed form of query/point_solid.hpp took that pair). Checked
+  // here: each point inside its own shape (by the shapes' equations), on its surface along the
+  // normal, and the depth.
   const double r = 0.05;
   const mink::Sphere sphere{r};
   const mink::Cylinder cylinder{0.3, 1.0};
@@ -638,6 +709,57 @@ TEST(ContactNasty, SphereOnTheAxisOfACylinderOrCone) {
         expect_tied_depth(cone, Pose::identity(), sphere, at(0, 0, z), r + side, cone_size);
     EXPECT_NEAR((res.point_b - c).norm(), r, 1e-9 * cone_size) << oracle::describe(res);
     EXPECT_TRUE(inside_cone(res.point_a, 1e-9 * cone_size)) << oracle::describe(res);
+  }
+}
+
+TEST(ContactNasty, CoaxialCylindersAndCapsulesKeepTheirPointsOnTheShapes) {
+  // Coaxial pairs sunk so deep that the way out is sideways: every radial direction ties, EPA
+  // ends at its cap, and both support features along the answer's normal are segments along the
+  // axis. Holding one shape's support point and placing the other from it put B's point 0.23 off
+  // B (found by the review of the fix above); the witnesses must be a pair of points of the two
+  // segments at one height. Checked by the shapes' equations in B's frame and A's.
+  auto on_cylinder = [](const mink::Cylinder& c, const Pose& pose, const Vec3& w, double tol) {
+    const Vec3 p = pose.rotation.transpose() * (w - pose.translation);
+    return std::abs(std::hypot(p.x(), p.y()) - c.radius) <= tol &&
+           std::abs(p.z()) <= c.half_height + tol;
+  };
+  auto on_capsule = [](const mink::Capsule& c, const Pose& pose, const Vec3& w, double tol) {
+    const Vec3 p = pose.rotation.transpose() * (w - pose.translation);
+    const double z = std::clamp(p.z(), -c.half_height, c.half_height);
+    return std::abs((p - Vec3(0, 0, z)).norm() - c.radius) <= tol;
+  };
+  {
+    // The review's case, to the last digit.
+    const Quat q(-0x1.3d6683895319p-2, -0x1.3046a742094dep-1, -0x1.5e27747afdb44p-1,
+                 0x1.2711b4ccf71f3p-2);
+    const mink::Cylinder a{0x1.7be65143df7e6p-1, 0x1.df68ebfbf6f0fp+0};
+    const mink::Cylinder b{0x1.6a2e7936bcaaep-1, 0x1.f144829883961p+0};
+    const Pose pa = Pose::from(Vec3::Zero(), q);
+    const Pose pb =
+        Pose::from(Vec3(0x1.9332ccf347ac3p-6, -0x1.d7bd79665b89bp-3, -0x1.8d07feac3c375p-3), q);
+    const double size = a.bounding_radius() + b.bounding_radius();
+    const auto r = expect_tied_depth(a, pa, b, pb, a.radius + b.radius, size);
+    EXPECT_TRUE(on_cylinder(a, pa, r.point_a, 1e-9 * size)) << oracle::describe(r);
+    EXPECT_TRUE(on_cylinder(b, pb, r.point_b, 1e-9 * size)) << oracle::describe(r);
+  }
+  const Pose turned = rotated(Vec3(3, -2, 5), 0.7, Vec3(1, 2, 3));
+  for (const Pose& base : {Pose::identity(), turned}) {
+    const mink::Cylinder outer{1.0, 2.0}, inner{0.8, 1.5};
+    const double size = std::hypot(1.0, 2.0) + std::hypot(0.8, 1.5);
+    for (const double z : {0.0, 0.3, -0.2}) {
+      SCOPED_TRACE(z);
+      Pose pb = base;
+      pb.translation += base.rotation.col(2) * z;
+      // Sideways: 1 + 0.8; along the axis at least 2 + 1.5 - 0.3.
+      const auto r = expect_tied_depth(outer, base, inner, pb, 1.8, size);
+      EXPECT_TRUE(on_cylinder(outer, base, r.point_a, 1e-9 * size)) << oracle::describe(r);
+      EXPECT_TRUE(on_cylinder(inner, pb, r.point_b, 1e-9 * size)) << oracle::describe(r);
+      const mink::Capsule capsule{0.2, 0.5};
+      const double capsule_size = std::hypot(1.0, 2.0) + 0.7;
+      const auto q = expect_tied_depth(outer, base, capsule, pb, 1.2, capsule_size);
+      EXPECT_TRUE(on_cylinder(outer, base, q.point_a, 1e-9 * capsule_size)) << oracle::describe(q);
+      EXPECT_TRUE(on_capsule(capsule, pb, q.point_b, 1e-9 * capsule_size)) << oracle::describe(q);
+    }
   }
 }
 
