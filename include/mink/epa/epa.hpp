@@ -739,7 +739,8 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
             p1 = samples[j];
           }
     };
-    Vec3T<S> a0, a1, b0, b1, on_a_feature, on_b_shifted;
+    Vec3T<S> a0 = on_a[0], a1 = on_a[0], b0 = on_b[0], b1 = on_b[0];
+    Vec3T<S> on_a_feature = on_a[0], on_b_shifted = on_b[0];
     farthest_pair(on_a, a0, a1);
     farthest_pair(on_b, b0, b1);
     const Vec3T<S> shift = least.value * n;
