@@ -47,13 +47,17 @@ class MinkQueries final : public PairQueries {
     }
   }
   // A polytope of 64 points or more scans for its first kPolytopeHullAfterSupports support calls,
-  // then builds its hull and climbs it (polytope.hpp). Done here, before timing, as a simulation
+  // then builds its hull and climbs it; a smaller one builds its face planes, for spheres, after
+  // kPolytopePlanesAfterQueries queries (polytope.hpp). Done here, before timing, as a simulation
   // does in its first frames: otherwise the switch lands in whichever benchmark first uses the
   // shape, and its time (a hull build per shape) depends on how Google Benchmark sizes its runs.
   template <class T>
   static void settle(const T& shape) {
     if constexpr (std::is_same_v<T, mink::Polytope>) {
-      if (shape.size() < mink::kHullClimbMinVertices) return;  // always scans
+      if (shape.size() < mink::kHullClimbMinVertices) {
+        (void)shape.build_face_planes();  // null for more than 32 faces: GJK answers
+        return;
+      }
       for (std::uint32_t i = 0; i <= mink::kPolytopeHullAfterSupports && !shape.climbs(); ++i)
         (void)shape.support_core(mink::Vec3::UnitX());
     }

@@ -124,18 +124,20 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     }
   }
   if constexpr (detail::kPointSolid<A, B>) {
-    // A sphere or point against a box or cylinder, inside it or not: closed form, no GJK or EPA.
-    const auto local = detail::point_solid_local(a, pose_a, b, pose_b);
-    if (!(std::abs(local.signed_distance) <= std::numeric_limits<S>::max())) {
-      result.error = detail::kOverflowError;
+    // A sphere or point against a box, cylinder or small polytope, inside it or not: closed form,
+    // no GJK or EPA.
+    if (const auto local = detail::point_solid_local(a, pose_a, b, pose_b)) {
+      if (!(std::abs(local->signed_distance) <= std::numeric_limits<S>::max())) {
+        result.error = detail::kOverflowError;
+        return result;
+      }
+      const auto cores = detail::point_solid_world<A, B>(*local, pose_a, pose_b);
+      detail::contact_from_cores(cores.on_a, cores.on_b, cores.normal, cores.distance, radius_a,
+                                 radius_b, inside, result);
+      result.normal_chosen = cores.tie;
+      result.status = result.intersect ? Status::Intersecting : Status::Separated;
       return result;
     }
-    const auto cores = detail::point_solid_world<A, B>(local, pose_a, pose_b);
-    detail::contact_from_cores(cores.on_a, cores.on_b, cores.normal, cores.distance, radius_a,
-                               radius_b, inside, result);
-    result.normal_chosen = cores.tie;
-    result.status = result.intersect ? Status::Intersecting : Status::Separated;
-    return result;
   }
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
     // Two boxes whose cores overlap: the separating axis test is EPA's depth and normal, exact

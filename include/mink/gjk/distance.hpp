@@ -118,23 +118,24 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     return result;
   }
   if constexpr (detail::kPointSolid<A, B>) {
-    // A sphere or point against a box or cylinder: closed form, no iteration.
-    const auto local = detail::point_solid_local(a, pose_a, b, pose_b);
-    const S radius_a = a.core_radius(), radius_b = b.core_radius();
-    if (!(std::abs(local.signed_distance) <= std::numeric_limits<S>::max())) {
-      result.error = detail::kOverflowError;
+    // A sphere or point against a box, cylinder or small polytope: closed form, no iteration.
+    if (const auto local = detail::point_solid_local(a, pose_a, b, pose_b)) {
+      const S radius_a = a.core_radius(), radius_b = b.core_radius();
+      if (!(std::abs(local->signed_distance) <= std::numeric_limits<S>::max())) {
+        result.error = detail::kOverflowError;
+        return result;
+      }
+      const S touch = tolerances.relative * (a.bounding_radius() + b.bounding_radius());
+      if (local->signed_distance <= radius_a + radius_b + touch) {
+        result.status = Status::Intersecting;
+        result.intersect = true;
+        return result;
+      }
+      const auto cores = detail::point_solid_world<A, B>(*local, pose_a, pose_b);
+      detail::separated_from_cores(cores.on_a, cores.on_b, cores.normal, cores.distance, radius_a,
+                                   radius_b, result);
       return result;
     }
-    const S touch = tolerances.relative * (a.bounding_radius() + b.bounding_radius());
-    if (local.signed_distance <= radius_a + radius_b + touch) {
-      result.status = Status::Intersecting;
-      result.intersect = true;
-      return result;
-    }
-    const auto cores = detail::point_solid_world<A, B>(local, pose_a, pose_b);
-    detail::separated_from_cores(cores.on_a, cores.on_b, cores.normal, cores.distance, radius_a,
-                                 radius_b, result);
-    return result;
   }
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const S radius_a = a.core_radius(), radius_b = b.core_radius();

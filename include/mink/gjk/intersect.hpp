@@ -78,9 +78,11 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     return result;
   }
   if constexpr (detail::kPointSolid<A, B>) {
-    // A sphere or point against a box or cylinder: closed form, no iteration.
-    detail::intersect_from_core_gap(detail::point_solid_gap(a, pose_a, b, pose_b), reach, result);
-    return result;
+    // A sphere or point against a box, cylinder or small polytope: closed form, no iteration.
+    if (const auto gap = detail::point_solid_gap(a, pose_a, b, pose_b, reach)) {
+      detail::intersect_from_core_gap(*gap, reach, result);
+      return result;
+    }
   }
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
     // Two boxes: a point of B within reach of A, or the separating axis test, decides in a few

@@ -1,22 +1,36 @@
 /// @file point_solid.hpp
-/// A point core (Sphere, Point, and their Rounded versions) against a box or cylinder core (Box,
-/// Cylinder, and their Rounded versions) in closed form: the solid's point nearest to the point
-/// core is the point clamped to the solid, and a point inside leaves through the nearest part of
-/// the surface (a box's nearest face; a cylinder's side or nearer cap). intersect(), distance()
-/// and contact() take this path for such pairs, in either order: exact to rounding, 0
-/// iterations, and for a sphere inside the solid no EPA (whose answer for a sphere near a
-/// cylinder's axis, where every radial direction is nearly as good, could only be bracketed).
+/// A point core (Sphere, Point, and their Rounded versions) against a box, cylinder or small
+/// polytope core (Box, Cylinder, Polytope, and their Rounded versions) in closed form: the
+/// solid's point nearest to the point core is the point clamped to the solid, and a point inside
+/// leaves through the nearest part of the surface (a box's nearest face; a cylinder's side or
+/// nearer cap; a polytope's nearest face plane). intersect(), distance() and contact() take this
+/// path for such pairs, in either order: exact to rounding, 0 iterations, and for a sphere inside
+/// the solid no EPA (whose answer for a sphere near a cylinder's axis, where every radial
+/// direction is nearly as good, could only be bracketed). A polytope takes it once it has its
+/// face planes (PolytopeT::face_planes()), and leaves to GJK the few answers the planes cannot
+/// give exactly.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <type_traits>
 
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/math/pose.hpp"
 #include "mink/query/box_box.hpp"
 #include "mink/shapes/cylinder.hpp"
+#include "mink/shapes/support_scan.hpp"
+
+namespace mink {
+// Declared only: their headers bring in the hull's (convex_hull.hpp), whose HullStatus::Point and
+// ::Segment GCC's -Wshadow reports against mink::Point and mink::Segment when they come after.
+template <class S>
+class PolytopeT;
+template <class S>
+struct FacePlanesT;
+}  // namespace mink
 
 namespace mink::detail {
 
@@ -42,9 +56,11 @@ struct PointSolidLocal {
   bool tie;
 };
 
-/// Solid cores with a closed-form nearest point: SolidCore<T>::core(t) is the solid (a Box or a
-/// Cylinder), SolidCore<T>::local(core, p) the answer above, SolidCore<T>::clamp(core, p) the
-/// solid's point nearest to p.
+/// Solid cores with a closed-form nearest point: SolidCore<T>::core(t) points to the solid (a Box,
+/// a Cylinder, a polytope's FacePlanes; null: no closed form for this shape yet),
+/// SolidCore<T>::local(core, p) is the answer above, and SolidCore<T>::gap(core, p, reach) is p
+/// minus the solid's point nearest to p (0 inside), or a vector longer than `reach` when p is
+/// farther than that. Either may be nothing: GJK and EPA answer then.
 template <class T>
 struct SolidCore : std::false_type {};
 
@@ -53,11 +69,14 @@ struct SolidCore : std::false_type {};
 template <class S>
 struct SolidCore<BoxT<S>> : std::true_type {
   using Core = BoxT<S>;
-  static const Core& core(const BoxT<S>& b) { return b; }
+  static const Core* core(const BoxT<S>& b) { return &b; }
   static Vec3T<S> clamp(const Core& b, const Vec3T<S>& p) {
     return p.cwiseMax(-b.half_extents).cwiseMin(b.half_extents);
   }
-  static PointSolidLocal<S> local(const Core& b, const Vec3T<S>& p) {
+  static std::optional<Vec3T<S>> gap(const Core& b, const Vec3T<S>& p, S) {
+    return p - clamp(b, p);
+  }
+  static std::optional<PointSolidLocal<S>> local(const Core& b, const Vec3T<S>& p) {
     const Vec3T<S>& h = b.half_extents;
     PointSolidLocal<S> out;
     out.p = p;
@@ -93,7 +112,7 @@ struct SolidCore<BoxT<S>> : std::true_type {
 template <class S>
 struct SolidCore<CylinderT<S>> : std::true_type {
   using Core = CylinderT<S>;
-  static const Core& core(const CylinderT<S>& c) { return c; }
+  static const Core* core(const CylinderT<S>& c) { return &c; }
 
   /// p's radial direction (ux, uy) and distance from the axis (0 and +x on the axis).
   static S radial(const Vec3T<S>& p, S& ux, S& uy) {
@@ -112,7 +131,10 @@ struct SolidCore<CylinderT<S>> : std::true_type {
     if (rho <= c.radius) return {p.x(), p.y(), z};
     return {ux * c.radius, uy * c.radius, z};
   }
-  static PointSolidLocal<S> local(const Core& c, const Vec3T<S>& p) {
+  static std::optional<Vec3T<S>> gap(const Core& c, const Vec3T<S>& p, S) {
+    return p - clamp(c, p);
+  }
+  static std::optional<PointSolidLocal<S>> local(const Core& c, const Vec3T<S>& p) {
     PointSolidLocal<S> out;
     out.p = p;
     out.tie = false;
@@ -150,15 +172,151 @@ struct SolidCore<CylinderT<S>> : std::true_type {
   }
 };
 
+/// A polytope of 4 to 63 points, through its face planes (face_planes.hpp; none before the
+/// polytope has built them). Inside: out through the face plane nearest to p. Outside: the
+/// nearest point of the faces whose planes p is above, in a face or on an edge. Nothing (GJK
+/// answers) for coordinates beyond 2^488 (2^40 in float), whose squares would overflow, and for a
+/// point outside whose nearest point is on an edge or a corner less than 1e-3 of the coordinates'
+/// size away: the gap's rounding would tilt the normal. Ties: p inside, as deep below two faces.
+template <class S>
+struct SolidCore<PolytopeT<S>> : std::true_type {
+  using Core = FacePlanesT<S>;
+  static const Core* core(const PolytopeT<S>& p) { return p.face_planes(); }
+
+  /// Outside, the nearest point is searched over the faces p is above only up to this many
+  /// faces: each costs a few branches per edge, and from about 20 faces GJK's few support
+  /// calls cost less.
+  static constexpr std::uint32_t kNearestMaxFaces = 20;
+
+  static constexpr S kLargest = power_of_two<S>(std::numeric_limits<S>::max_exponent / 2 - 24);
+
+  /// The signed distances of p from the face planes (positive above), into `above`; returns the
+  /// largest.
+  static S plane_distances(const Core& c, const Vec3T<S>& p, S* above) {
+    const std::size_t n = c.scan_count();  // a multiple of 4: whole SIMD blocks, padding -inf
+#if defined(__AVX2__) || defined(__SSE2__)
+    if constexpr (std::is_same_v<S, double>) {
+      // The maximum in registers: an arg-max loop would carry a compare and a select from one
+      // face to the next. Same operations, in the same order, as the scalar loop below.
+      const LaneVec px = lane_set1(p.x()), py = lane_set1(p.y()), pz = lane_set1(p.z());
+      LaneVec largest = lane_set1(-std::numeric_limits<double>::infinity());
+      for (std::size_t f = 0; f < n; f += kLaneWidth) {
+        const LaneVec d = lane_sub(lane_add(lane_add(lane_mul(lane_load(c.nx.data() + f), px),
+                                                     lane_mul(lane_load(c.ny.data() + f), py)),
+                                            lane_mul(lane_load(c.nz.data() + f), pz)),
+                                   lane_load(c.offset.data() + f));
+        lane_store(above + f, d);
+        largest = lane_max(largest, d);
+      }
+      return lane_hmax(largest);
+    }
+#endif
+    S largest = -std::numeric_limits<S>::infinity();
+    for (std::size_t f = 0; f < n; ++f) {
+      above[f] = c.nx[f] * p.x() + c.ny[f] * p.y() + c.nz[f] * p.z() - c.offset[f];
+      largest = std::max(largest, above[f]);
+    }
+    return largest;
+  }
+  /// The first face whose distance is `largest`.
+  static std::uint32_t face_at(const Core& c, const S* above, S largest) {
+    std::uint32_t f = 0;
+    while (f + 1 < c.face_count && above[f] != largest) ++f;
+    return f;
+  }
+
+  /// p outside: the nearest point of the polytope, its squared distance, and the face whose
+  /// interior holds it (-1: an edge or a corner). It lies on a face p is above (at an edge or a
+  /// corner, p - q is a positive combination of the faces' normals there, so p is above one of
+  /// them), in that face's interior when p projects into it, else on an edge p lies beyond.
+  struct Nearest {
+    Vec3T<S> point;
+    S distance_sq;
+    int face;
+  };
+  /// Stops at the first point within sqrt(`enough_sq`) of p.
+  static Nearest nearest_outside(const Core& c, const Vec3T<S>& p, const S* above,
+                                 S enough_sq = S(-1)) {
+    Nearest out{p, std::numeric_limits<S>::infinity(), -1};
+    for (std::uint32_t f = 0; f < c.face_count; ++f) {
+      if (!(above[f] > S(0))) continue;
+      const std::uint32_t begin = c.edge_begin[f], end = c.edge_begin[f + 1];
+      bool in_face = true;
+      for (std::uint32_t k = begin; k < end; ++k) {
+        const Vec3T<S> from_corner = p - c.corner[k];
+        if (c.inward[k].dot(from_corner) >= S(0)) continue;
+        in_face = false;
+        const Vec3T<S> edge = c.corner[k + 1 == end ? begin : k + 1] - c.corner[k];
+        const S edge_sq = edge.squaredNorm();
+        const S t = edge_sq > S(0) ? std::clamp(from_corner.dot(edge) / edge_sq, S(0), S(1)) : S(0);
+        const Vec3T<S> q = c.corner[k] + t * edge;
+        const S distance_sq = (p - q).squaredNorm();
+        if (distance_sq < out.distance_sq) out = {q, distance_sq, -1};
+      }
+      if (in_face && above[f] * above[f] < out.distance_sq)
+        out = {p - above[f] * c.normal(f), above[f] * above[f], int(f)};
+      if (out.distance_sq <= enough_sq) break;
+    }
+    return out;
+  }
+
+  static std::optional<Vec3T<S>> gap(const Core& c, const Vec3T<S>& p, S reach) {
+    if (!(p.cwiseAbs().maxCoeff() <= kLargest)) return std::nullopt;
+    alignas(32) std::array<S, Core::kMaxFaces> above;
+    const S largest = plane_distances(c, p, above.data());
+    if (largest <= S(0)) return Vec3T<S>::Zero();
+    // Farther from a plane than reach: as far from the polytope. Any vector that long will do.
+    if (largest > reach) return Vec3T<S>(largest, S(0), S(0));
+    if (c.face_count > kNearestMaxFaces) return std::nullopt;
+    return Vec3T<S>(p - nearest_outside(c, p, above.data(), reach * reach).point);
+  }
+
+  static std::optional<PointSolidLocal<S>> local(const Core& c, const Vec3T<S>& p) {
+    if (!(p.cwiseAbs().maxCoeff() <= kLargest)) return std::nullopt;
+    alignas(32) std::array<S, Core::kMaxFaces> above;
+    const std::uint32_t best = face_at(c, above.data(), plane_distances(c, p, above.data()));
+    PointSolidLocal<S> out;
+    out.p = p;
+    out.tie = false;
+    if (above[best] <= S(0)) {
+      // Inside: the ball of radius -above[best] about p is below every plane, so inside, and the
+      // foot of p on the nearest plane is on the surface.
+      for (std::uint32_t f = 0; f < c.face_count; ++f)
+        out.tie |= f != best && above[f] == above[best];
+      out.out_of_solid = c.normal(best);
+      out.on_solid = p - above[best] * out.out_of_solid;
+      out.signed_distance = above[best];
+      return out;
+    }
+    if (c.face_count > kNearestMaxFaces) return std::nullopt;
+    const Nearest nearest = nearest_outside(c, p, above.data());
+    out.on_solid = nearest.point;
+    if (nearest.face >= 0) {
+      out.out_of_solid = c.normal(std::size_t(nearest.face));
+      out.signed_distance = above[std::size_t(nearest.face)];
+      return out;
+    }
+    // An edge or a corner: the direction of the gap, whose rounding (eps of the coordinates)
+    // tilts it by eps |p| / |gap|; such a tilt moves the support to the next corner, by the tilt
+    // times an edge's length. Kept below 1e3 eps.
+    const S scale_sq = p.squaredNorm() + c.largest * c.largest;
+    if (!(nearest.distance_sq >= S(1e-6) * scale_sq)) return std::nullopt;
+    const Vec3T<S> gap = p - nearest.point;
+    out.signed_distance = std::sqrt(nearest.distance_sq);
+    out.out_of_solid = gap / out.signed_distance;
+    return out;
+  }
+};
+
 template <class T>
 requires(SolidCore<T>::value) struct SolidCore<Rounded<T>> : std::true_type {
+  using S = typename T::Scalar;
   using Core = typename SolidCore<T>::Core;
-  static const Core& core(const Rounded<T>& r) { return SolidCore<T>::core(r.shape); }
-  static Vec3T<typename T::Scalar> clamp(const Core& c, const Vec3T<typename T::Scalar>& p) {
-    return SolidCore<T>::clamp(c, p);
+  static const Core* core(const Rounded<T>& r) { return SolidCore<T>::core(r.shape); }
+  static std::optional<Vec3T<S>> gap(const Core& c, const Vec3T<S>& p, S reach) {
+    return SolidCore<T>::gap(c, p, reach);
   }
-  static PointSolidLocal<typename T::Scalar> local(const Core& c,
-                                                   const Vec3T<typename T::Scalar>& p) {
+  static std::optional<PointSolidLocal<S>> local(const Core& c, const Vec3T<S>& p) {
     return SolidCore<T>::local(c, p);
   }
 };
@@ -191,9 +349,13 @@ Vec3T<typename A::Scalar> point_in_solid_frame(const A& a, const PoseT<typename 
     return pose_b.inverse_rotate(SegmentCore<A>::world(a, pose_a, pose_b.translation).centre);
 }
 
-/// The solid core of the pair (either order).
+/// The SolidCore of the pair (either order).
 template <class A, class B>
-const auto& solid_of(const A& a, const B& b) {
+using SolidOf = std::conditional_t<SolidCore<A>::value, SolidCore<A>, SolidCore<B>>;
+
+/// The solid core of the pair (either order); null when it has no closed form yet.
+template <class A, class B>
+const auto* solid_of(const A& a, const B& b) {
   if constexpr (SolidCore<A>::value)
     return SolidCore<A>::core(a);
   else
@@ -201,23 +363,28 @@ const auto& solid_of(const A& a, const B& b) {
 }
 
 /// The point core minus its clamp into the solid core, in the solid's frame (0 when the point is
-/// inside), for the yes/no test: no points.
+/// inside), for the yes/no test: no points. Longer than `reach` when the point is farther than
+/// that (then not necessarily the whole gap). Nothing: GJK decides.
 template <class A, class B>
-Vec3T<typename A::Scalar> point_solid_gap(const A& a, const PoseT<typename A::Scalar>& pose_a,
-                                          const B& b, const PoseT<typename A::Scalar>& pose_b) {
-  using Solid = std::conditional_t<SolidCore<A>::value, SolidCore<A>, SolidCore<B>>;
-  const Vec3T<typename A::Scalar> p = point_in_solid_frame(a, pose_a, b, pose_b);
-  return p - Solid::clamp(solid_of(a, b), p);
+std::optional<Vec3T<typename A::Scalar>> point_solid_gap(const A& a,
+                                                         const PoseT<typename A::Scalar>& pose_a,
+                                                         const B& b,
+                                                         const PoseT<typename A::Scalar>& pose_b,
+                                                         typename A::Scalar reach) {
+  const auto* solid = solid_of(a, b);
+  if (!solid) return std::nullopt;
+  return SolidOf<A, B>::gap(*solid, point_in_solid_frame(a, pose_a, b, pose_b), reach);
 }
 
-/// The point core against the solid core in the solid's frame (PointSolidLocal).
+/// The point core against the solid core in the solid's frame (PointSolidLocal). Nothing: GJK and
+/// EPA answer.
 template <class A, class B>
-PointSolidLocal<typename A::Scalar> point_solid_local(const A& a,
-                                                      const PoseT<typename A::Scalar>& pose_a,
-                                                      const B& b,
-                                                      const PoseT<typename A::Scalar>& pose_b) {
-  using Solid = std::conditional_t<SolidCore<A>::value, SolidCore<A>, SolidCore<B>>;
-  return Solid::local(solid_of(a, b), point_in_solid_frame(a, pose_a, b, pose_b));
+std::optional<PointSolidLocal<typename A::Scalar>> point_solid_local(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b) {
+  const auto* solid = solid_of(a, b);
+  if (!solid) return std::nullopt;
+  return SolidOf<A, B>::local(*solid, point_in_solid_frame(a, pose_a, b, pose_b));
 }
 
 /// point_solid_local()'s answer as the cores' points and normal in the world frame, A's and B's.

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mink/expected.hpp"
+#include "mink/shapes/face_planes.hpp"
 #include "mink/shapes/hull_shape.hpp"
 #include "mink/shapes/shape_common.hpp"
 #include "mink/shapes/support_scan.hpp"
@@ -21,16 +22,56 @@ namespace mink {
 /// A polytope of at least kHullClimbMinVertices points builds its hull after this many support
 /// queries and climbs it from then on (PolytopeT, "From scan to hull").
 inline constexpr std::uint32_t kPolytopeHullAfterSupports = 4096;
+/// A polytope of fewer points builds its face planes after this many queries against a sphere or
+/// a point (PolytopeT::face_planes()).
+inline constexpr std::uint32_t kPolytopePlanesAfterQueries = 256;
 
 namespace detail {
 
-/// The hull a large polytope builds once it has been queried enough, shared by its copies.
+/// Something a shape builds once it has been queried often enough, shared by the shape's copies:
+/// the query that brings the count to `after` builds it, in its own thread; others go on without
+/// it meanwhile, none waits. The count is a relaxed load and store, not an atomic increment: a
+/// count lost between racing threads only delays the build, and the query path pays no locked
+/// instruction.
+template <class T>
+struct LazyBuild {
+  enum : int { kCounting, kBuilding, kReady, kFailed };
+  std::atomic<std::uint32_t> count{0};
+  std::atomic<int> state{kCounting};
+  std::optional<T> value;  // written once, before state becomes kReady
+
+  const T* ready() const {
+    return state.load(std::memory_order_acquire) == kReady ? &*value : nullptr;
+  }
+  /// Counts a query; the one that reaches `after` runs `build` (which returns a std::optional<T>;
+  /// nothing: the shape goes on without it for good).
+  template <class Build>
+  void count_towards(std::uint32_t after, Build&& build) {
+    const std::uint32_t n = count.load(std::memory_order_relaxed) + 1;
+    count.store(n, std::memory_order_relaxed);
+    if (n >= after) build_now(build);
+  }
+  /// Builds it now unless another query has already started to: then ready() tells when it is.
+  template <class Build>
+  const T* build_now(Build&& build) {
+    int expected = kCounting;
+    if (!state.compare_exchange_strong(expected, kBuilding, std::memory_order_acq_rel))
+      return ready();
+    std::optional<T> built = build();
+    if (!built) {
+      state.store(kFailed, std::memory_order_release);
+      return nullptr;
+    }
+    value.emplace(std::move(*built));
+    state.store(kReady, std::memory_order_release);
+    return &*value;
+  }
+};
+
+/// The hull a large polytope climbs, and its vertices' indices among the polytope's points.
 template <class S>
 struct PolytopeHull {
-  enum : int { kScanning, kBuilding, kReady, kFailed };
-  std::atomic<std::uint32_t> supports{0};
-  std::atomic<int> state{kScanning};
-  std::optional<ConvexHullShapeT<S>> hull;     // written once, before state becomes kReady
+  ConvexHullShapeT<S> hull;
   std::vector<std::uint32_t> point_of_vertex;  // hull vertex -> index of the polytope's point
 };
 
@@ -51,6 +92,13 @@ struct PolytopeHull {
 /// a hull vertex whose support value is the maximum within the hull's tolerance (1e-10 of the
 /// points' extent; exact for exactly coplanar faces), and on ties (a face facing d) it may name
 /// another point of the same face than the scan did. Copies share the hull.
+///
+/// Planes for spheres and points. A polytope of 4 to kHullClimbMinVertices - 1 points answers a
+/// sphere, a point and their Rounded versions in closed form once it has its face planes
+/// (face_planes.hpp, query/point_solid.hpp): it builds them, in the same way, after
+/// kPolytopePlanesAfterQueries such queries, or at once with build_face_planes(). Answers are the
+/// same to rounding either way; where the planes could not be exact (a face merged within the
+/// hull's tolerance, more than FacePlanesT::kMaxFaces faces) GJK keeps answering.
 template <class S>
 class PolytopeT {
  public:
@@ -74,7 +122,9 @@ class PolytopeT {
       p.bounding_radius_ = std::max(p.bounding_radius_, points[i].norm());
     }
     if (n >= kHullClimbMinVertices && n <= std::numeric_limits<std::uint32_t>::max() / 2)
-      p.lazy_hull_ = std::make_shared<detail::PolytopeHull<S>>();
+      p.lazy_hull_ = std::make_shared<detail::LazyBuild<detail::PolytopeHull<S>>>();
+    else if (n >= 4)
+      p.lazy_planes_ = std::make_shared<detail::LazyBuild<FacePlanesT<S>>>();
     return p;
   }
 
@@ -104,52 +154,70 @@ class PolytopeT {
 
   /// The hull support climbs once the polytope has switched, else null (see the class comment).
   const ConvexHullShapeT<S>* hull() const {
-    if (!lazy_hull_ ||
-        lazy_hull_->state.load(std::memory_order_acquire) != detail::PolytopeHull<S>::kReady)
-      return nullptr;
-    return &*lazy_hull_->hull;
+    const auto* climb = lazy_hull_ ? lazy_hull_->ready() : nullptr;
+    return climb ? &climb->hull : nullptr;
   }
   bool climbs() const { return hull() != nullptr; }
+
+  /// The planes of a polytope of 4 to kHullClimbMinVertices - 1 points, which answer a sphere's
+  /// or a point's queries in closed form (query/point_solid.hpp), or null: before the polytope
+  /// has been asked kPolytopePlanesAfterQueries times (a hull of a few points costs 10-25 us, about
+  /// as much as that many GJK distance queries save), or when its hull has no exact planes
+  /// (FacePlanesT::make). Counts the call. Copies share the planes.
+  const FacePlanesT<S>* face_planes() const {
+    if (!lazy_planes_) return nullptr;
+    if (const FacePlanesT<S>* planes = lazy_planes_->ready()) return planes;
+    lazy_planes_->count_towards(kPolytopePlanesAfterQueries, [this] { return build_planes(); });
+    return nullptr;
+  }
+  /// Builds the planes now, for a polytope that will be queried often (as a simulation prepares
+  /// its shapes); null as for face_planes(), or while another thread is building them.
+  const FacePlanesT<S>* build_face_planes() const {
+    if (!lazy_planes_) return nullptr;
+    return lazy_planes_->build_now([this] { return build_planes(); });
+  }
 
  private:
   PolytopeT() = default;
 
+  template <class T>
+  std::vector<Vec3T<T>> points_as() const {
+    std::vector<Vec3T<T>> points(size());
+    for (std::size_t i = 0; i < size(); ++i) points[i] = point(i).template cast<T>();
+    return points;
+  }
+
   /// support_index() of a polytope that may climb: its hull once built, else the scan, counted.
   [[gnu::noinline]] std::size_t lazy_support_index(const Vec3T<S>& d) const {
-    detail::PolytopeHull<S>& lazy = *lazy_hull_;
-    if (lazy.state.load(std::memory_order_acquire) == lazy.kReady)
-      return lazy.point_of_vertex[lazy.hull->support_index(d)];
-    count_support(lazy);
+    if (const auto* climb = lazy_hull_->ready())
+      return climb->point_of_vertex[climb->hull.support_index(d)];
+    lazy_hull_->count_towards(kPolytopeHullAfterSupports, [this] { return build_hull(); });
     return scan_index(d);
   }
 
-  /// Counts a scanned query and builds the hull at the kPolytopeHullAfterSupports-th. The count
-  /// is a relaxed load and store, not an atomic increment: a lost count between racing threads
-  /// only delays the switch, and it costs no locked instruction on the query path.
-  void count_support(detail::PolytopeHull<S>& lazy) const {
-    const std::uint32_t count = lazy.supports.load(std::memory_order_relaxed) + 1;
-    lazy.supports.store(count, std::memory_order_relaxed);
-    if (count < kPolytopeHullAfterSupports) return;
-    int expected = lazy.kScanning;
-    if (!lazy.state.compare_exchange_strong(expected, lazy.kBuilding, std::memory_order_acq_rel))
-      return;
-    std::vector<Vec3T<S>> points(size());
-    for (std::size_t i = 0; i < size(); ++i) points[i] = point(i);
-    Expected<ConvexHullShapeT<S>> hull = ConvexHullShapeT<S>::make(points);
+  std::optional<detail::PolytopeHull<S>> build_hull() const {
+    Expected<ConvexHullShapeT<S>> hull = ConvexHullShapeT<S>::make(points_as<S>());
     // A hull of finite points always builds; on a failure (a bug of the builder) keep scanning.
-    if (!hull) {
-      lazy.state.store(lazy.kFailed, std::memory_order_release);
-      return;
-    }
-    lazy.point_of_vertex.resize(hull->size());
-    for (std::size_t v = 0; v < hull->size(); ++v) lazy.point_of_vertex[v] = hull->input_index(v);
-    lazy.hull.emplace(std::move(hull).value());
-    lazy.state.store(lazy.kReady, std::memory_order_release);
+    if (!hull) return std::nullopt;
+    detail::PolytopeHull<S> climb{std::move(hull).value(), {}};
+    climb.point_of_vertex.resize(climb.hull.size());
+    for (std::size_t v = 0; v < climb.hull.size(); ++v)
+      climb.point_of_vertex[v] = climb.hull.input_index(v);
+    return climb;
+  }
+
+  std::optional<FacePlanesT<S>> build_planes() const {
+    const std::vector<Vec3> points = points_as<double>();
+    const Expected<ConvexHull> hull = build_convex_hull(points);
+    if (!hull) return std::nullopt;
+    return FacePlanesT<S>::make(*hull, points);
   }
 
   std::vector<S> x_, y_, z_;
   S bounding_radius_ = S(0);
-  std::shared_ptr<detail::PolytopeHull<S>> lazy_hull_;  // null below kHullClimbMinVertices
+  // At most one of the two: the hull from kHullClimbMinVertices points, the planes below.
+  std::shared_ptr<detail::LazyBuild<detail::PolytopeHull<S>>> lazy_hull_;
+  std::shared_ptr<detail::LazyBuild<FacePlanesT<S>>> lazy_planes_;
 };
 
 using Polytope = PolytopeT<double>;

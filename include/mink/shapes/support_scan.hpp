@@ -57,6 +57,9 @@ inline LaneVec lane_load(const double* p) {
 inline LaneVec lane_add(LaneVec a, LaneVec b) {
   return _mm256_add_pd(a, b);
 }
+inline LaneVec lane_sub(LaneVec a, LaneVec b) {
+  return _mm256_sub_pd(a, b);
+}
 inline LaneVec lane_mul(LaneVec a, LaneVec b) {
   return _mm256_mul_pd(a, b);
 }
@@ -81,6 +84,9 @@ inline LaneVec lane_load(const double* p) {
 }
 inline LaneVec lane_add(LaneVec a, LaneVec b) {
   return _mm_add_pd(a, b);
+}
+inline LaneVec lane_sub(LaneVec a, LaneVec b) {
+  return _mm_sub_pd(a, b);
 }
 inline LaneVec lane_mul(LaneVec a, LaneVec b) {
   return _mm_mul_pd(a, b);

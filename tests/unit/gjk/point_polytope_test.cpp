@@ -1,0 +1,215 @@
+// Spheres, points and rounded points against polytopes that have built their face planes
+// (PolytopeT::build_face_planes(), query/point_solid.hpp): intersect(), distance() and contact()
+// against brute force over the polytope's points (tests/oracle): the distance of the centre from
+// the hull by the Minkowski difference of a point and the points, the depth by facet
+// enumeration. Polytopes: random, on a sphere, box corners, with duplicates, nearly coplanar
+// faces (noise 1e-13 to 1e-9: planes only where flat to rounding), needles 1e-3 thick, flat sets
+// (no planes: GJK answers); centres inside, on and near the surface and far away, the sphere as A
+// or as B, far from the origin.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "mink/mink.hpp"
+#include "oracle/analytic.hpp"
+#include "oracle/brute_force.hpp"
+#include "oracle/check.hpp"
+#include "oracle/contact_check.hpp"
+#include "oracle/penetration.hpp"
+#include "oracle/random.hpp"
+
+namespace {
+
+using mink::Pose;
+using mink::Vec3;
+using oracle::Real;
+using oracle::Rng;
+using oracle::V3;
+using oracle::widen;
+
+enum Kind { kRandom, kRound, kBox, kDuplicates, kNearlyCoplanar, kFlat, kNeedle, kKinds };
+
+std::vector<Vec3> point_set(Rng& rng, int kind, double scale) {
+  std::vector<Vec3> pts;
+  const int count = rng.integer(4, 24);
+  if (kind == kBox || kind == kNearlyCoplanar) {
+    const Vec3 half(rng.log_uniform(0.05, 1), rng.log_uniform(0.05, 1), rng.log_uniform(0.05, 1));
+    for (int i = 0; i < 8; ++i)
+      pts.emplace_back(i & 1 ? half.x() : -half.x(), i & 2 ? half.y() : -half.y(),
+                       i & 4 ? half.z() : -half.z());
+    if (kind == kNearlyCoplanar) {
+      // Points on the faces, lifted off them by up to 1e-13 .. 1e-9 of the box.
+      const double noise = rng.log_uniform(1e-13, 1e-9) * half.maxCoeff();
+      for (int i = 0; i < 6; ++i) {
+        Vec3 p(rng.uniform(-1, 1) * half.x(), rng.uniform(-1, 1) * half.y(),
+               rng.uniform(-1, 1) * half.z());
+        const int axis = rng.integer(0, 2);
+        p[axis] = (rng.chance(0.5) ? 1 : -1) * (half[axis] + noise * rng.uniform(-1, 1));
+        pts.push_back(p);
+      }
+    }
+    for (Vec3& p : pts) p *= scale;
+    return pts;
+  }
+  for (int i = 0; i < count; ++i) {
+    Vec3 p = kind == kRound ? Vec3(scale * rng.unit()) : rng.in_ball(scale);
+    if (kind == kDuplicates && i > 0 && rng.chance(0.4)) p = pts[rng.integer(0, i - 1)];
+    if (kind == kFlat) p.z() = 0;
+    if (kind == kNeedle) p = Vec3(p.x(), 1e-3 * p.y(), 1e-3 * p.z());
+    pts.push_back(p);
+  }
+  return pts;
+}
+
+/// A centre for the sphere: a random point of the polytope's box, the surface or far, moved by a
+/// random offset of a random size.
+Vec3 centre_near(Rng& rng, const std::vector<Vec3>& pts, double scale) {
+  const Vec3 base = pts[rng.integer(0, int(pts.size()) - 1)];
+  const double reach = scale * rng.log_uniform(1e-6, 3);
+  switch (rng.integer(0, 3)) {
+    case 0:
+      return base + reach * rng.unit();  // near a vertex
+    case 1: {
+      const Vec3 other = pts[rng.integer(0, int(pts.size()) - 1)];
+      return rng.uniform(0, 1) * base + rng.uniform(0, 1) * other + reach * rng.unit();
+    }
+    case 2:
+      return rng.in_ball(scale);  // often inside
+    default:
+      return rng.in_ball(4 * scale);
+  }
+}
+
+/// Sweeps spheres (radius 0: a point; `rounded`: a Rounded<Point>) against polytopes with planes.
+void sweep(std::uint64_t base, int default_count, const char* name) {
+  const int n = oracle::sweep_count(default_count);
+  oracle::Worst worst(std::string(name) + " distance");
+  oracle::DepthWorst depth_worst(std::string(name) + " contact");
+  int with_planes = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const int kind = rng.integer(0, kKinds - 1);
+    const double scale = rng.log_uniform(0.05, 2);
+    const auto local = point_set(rng, kind, scale);
+    const auto polytope = mink::Polytope::make(local);
+    ASSERT_TRUE(polytope);
+    const bool planes = polytope->build_face_planes() != nullptr;
+    with_planes += planes;
+    if (kind == kFlat) {
+      EXPECT_FALSE(planes) << "a flat set has no solid hull";
+    }
+    const double radius = rng.chance(0.2) ? 0.0 : scale * rng.log_uniform(1e-3, 1);
+    const mink::Sphere sphere{radius};
+    const Pose pb = rng.pose(rng.chance(0.2) ? 1e6 : 5);
+    const Pose pa = Pose::from(pb.apply(centre_near(rng, local, scale)), rng.rotation());
+    const bool sphere_first = rng.chance(0.5);
+    SCOPED_TRACE(testing::Message()
+                 << "kind " << kind << ", " << local.size() << " points, planes " << planes
+                 << ", radius " << radius << ", sphere first " << sphere_first);
+
+    const V3 centre = widen(pa.translation);
+    const auto wb = oracle::world_points(local, pb);
+    const auto core = oracle::polytope_pair({centre}, wb);
+    // The polytope's point nearest to the centre (the centre itself when inside).
+    const V3 nearest = centre + core.distance * core.normal;
+    oracle::Answer expected = oracle::from_cores(centre, nearest, Real(radius), 0);
+    if (core.distance == 0) expected.gap = core.gap - Real(radius);
+    if (!sphere_first) {
+      std::swap(expected.point_a, expected.point_b);
+      expected.normal = -expected.normal;
+    }
+    const Real depth = Real(radius) + oracle::least_support_of_difference({centre}, wb);
+    const double size = radius + polytope->bounding_radius();
+    const double position = pb.translation.norm();
+
+    mink::DistanceResult got;
+    mink::IntersectResult got_bool;
+    mink::ContactResult got_contact;
+    if (sphere_first) {
+      got = mink::distance(sphere, pa, *polytope, pb);
+      got_bool = mink::intersect(sphere, pa, *polytope, pb);
+      got_contact = mink::contact(sphere, pa, *polytope, pb);
+    } else {
+      got = mink::distance(*polytope, pb, sphere, pa);
+      got_bool = mink::intersect(*polytope, pb, sphere, pa);
+      got_contact = mink::contact(*polytope, pb, sphere, pa);
+    }
+    oracle::expect_matches(expected, got, got_bool, size, position, radius > 0, worst);
+    const auto h_sphere = oracle::sphere_support(centre, Real(radius));
+    const auto h_polytope = oracle::points_support(wb);
+    if (sphere_first)
+      oracle::expect_contact_matches(depth, h_sphere, h_polytope, got_contact, size, position,
+                                     depth_worst);
+    else
+      oracle::expect_contact_matches(depth, h_polytope, h_sphere, got_contact, size, position,
+                                     depth_worst);
+    if (!got_contact.intersect && expected.gap > 1e-9 * size) {
+      EXPECT_NEAR(got_contact.distance, double(expected.distance), 1e-10 * (size + position));
+    }
+  }
+  EXPECT_GT(with_planes, n / 2);
+}
+
+TEST(PointPolytope, SpheresAgainstFacePlanesMatchBruteForce) {
+  sweep(610000, 3000, "sphere-polytope (face planes)");
+}
+
+/// Face planes exist only for solid hulls flat to rounding, of at most FacePlanes::kMaxFaces
+/// faces, and the polytope builds them after kPolytopePlanesAfterQueries point queries.
+TEST(PointPolytope, PlanesOnlyWhereExact) {
+  const std::vector<Vec3> cube = {{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {1, 1, -1},
+                                  {-1, -1, 1},  {1, -1, 1},  {-1, 1, 1},  {1, 1, 1}};
+  const auto p = mink::Polytope::make(cube).value();
+  const mink::Sphere s{0.5};
+  const Pose far = Pose::from_translation(Vec3(5, 0, 0));
+  for (std::uint32_t k = 0; k + 1 < mink::kPolytopePlanesAfterQueries; ++k)
+    (void)mink::distance(s, far, p, Pose::identity());
+  EXPECT_EQ(p.face_planes(), nullptr);  // this call is the count's last
+  const mink::FacePlanes* planes = p.face_planes();
+  ASSERT_NE(planes, nullptr);
+  EXPECT_EQ(planes->face_count, 6u);  // a cube's faces, not 12 triangles
+  const auto copy = p;
+  EXPECT_EQ(copy.face_planes(), planes) << "copies share the planes";
+
+  // A cube with a point lifted 1e-11 off a face: the hull merges it into the face (within its
+  // tolerance, 3.5e-10 here), which is then not flat to rounding.
+  auto lifted = cube;
+  lifted.push_back(Vec3(0.3, 0.2, 1 + 1e-11));
+  EXPECT_EQ(mink::Polytope::make(lifted)->build_face_planes(), nullptr);
+  // Flat, too few points, too many faces.
+  EXPECT_EQ(mink::Polytope::make(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}})
+                ->build_face_planes(),
+            nullptr);
+  EXPECT_EQ(
+      mink::Polytope::make(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})->build_face_planes(),
+      nullptr);
+  Rng rng(7);
+  std::vector<Vec3> round;
+  for (int i = 0; i < 40; ++i) round.push_back(rng.unit());
+  EXPECT_EQ(mink::Polytope::make(round)->build_face_planes(), nullptr);  // 76 faces
+}
+
+/// A sphere whose centre lies on the polytope's surface or within 1e-12 of an edge from outside:
+/// the gap's direction would be rounding, so GJK and EPA answer, and the answers still hold.
+TEST(PointPolytope, CentreOnTheSurfaceOrAnEdge) {
+  const std::vector<Vec3> tetra = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const auto p = mink::Polytope::make(tetra).value();
+  ASSERT_NE(p.build_face_planes(), nullptr);
+  const mink::Sphere s{0.25};
+  const auto wb = oracle::world_points(tetra, Pose::identity());
+  oracle::DepthWorst worst("centre on the surface");
+  for (const Vec3& c : {Vec3(0.5, -1e-12, -1e-12), Vec3(0.2, 0.2, 0), Vec3(0, 0, 0),
+                        Vec3(-1e-13, -1e-13, -1e-13), Vec3(0.5, 0.5, 1e-12), Vec3(0.1, 0.1, 0.1)}) {
+    SCOPED_TRACE(testing::Message() << "centre " << c.transpose());
+    const Pose pa = Pose::from_translation(c);
+    const Real depth = Real(0.25) + oracle::least_support_of_difference({widen(c)}, wb);
+    const auto got = mink::contact(s, pa, p, Pose::identity());
+    oracle::expect_contact_matches(depth, oracle::sphere_support(widen(c), Real(0.25)),
+                                   oracle::points_support(wb), got, 1.25, 0, worst);
+  }
+}
+
+}  // namespace
