@@ -183,9 +183,7 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   const S touch = tolerances.relative * size;
   const S radii = radius_a + radius_b;
-  if (gjk.status == Status::Intersecting || gjk.upper <= radii + touch) {
-    // Within touching range by GJK's upper bound, a distance of 0 is exact even where GJK hit
-    // its cap.
+  if (detail::cores_within_reach(gjk, radii + touch)) {
     result.status = Status::Intersecting;
     result.intersect = true;
     return result;

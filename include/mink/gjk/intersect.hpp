@@ -111,7 +111,7 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       result.error = detail::kOverflowError;
       return result;
     }
-    if (full.status == Status::Intersecting || full.upper <= reach) {
+    if (detail::cores_within_reach(full, reach)) {
       result.status = Status::Intersecting;
     } else {
       result.status =

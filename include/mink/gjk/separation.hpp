@@ -47,6 +47,15 @@ void line_up_witness_points(const SimplexT<S>& simplex, const Vec3T<S>& v, Vec3T
     on_a = on_b + v;
 }
 
+/// distance()'s first test of the distance loop's answer, before separate_cores(): the shapes
+/// intersect when GJK proved the cores overlap or its upper bound on their distance is within
+/// `reach` (the radii plus the touching tolerance), where a distance of 0 is exact even if GJK hit
+/// its cap. intersect() decides its stalled pairs by the same two steps, so the two never disagree.
+template <class S>
+bool cores_within_reach(const GjkOutcome<S>& gjk, S reach) {
+  return gjk.status == Status::Intersecting || gjk.upper <= reach;
+}
+
 /// The normal, closest points and proven lower bound of separate_cores() (see there), without
 /// the status.
 template <ConvexShape A, ConvexShape B>

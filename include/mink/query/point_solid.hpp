@@ -225,37 +225,56 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
     return f;
   }
 
-  /// p outside: the nearest point of the polytope, its squared distance, and the face whose
-  /// interior holds it (-1: an edge or a corner). It lies on a face p is above (at an edge or a
-  /// corner, p - q is a positive combination of the faces' normals there, so p is above one of
-  /// them), in that face's interior when p projects into it, else on an edge p lies beyond.
+  /// p outside: the nearest point of the polytope, its squared distance, the face whose interior
+  /// holds it (-1: an edge or a corner), and the edge whose interior holds it (else 0). It lies on
+  /// a face p is above (at an edge or a corner, p - q is a positive combination of the faces'
+  /// normals there, so p is above one of them): at p's foot on that face when p projects into
+  /// it, else on an edge p lies beyond. Stops at the first point within sqrt(`enough_sq`) of p.
   struct Nearest {
     Vec3T<S> point;
     S distance_sq;
     int face;
+    Vec3T<S> edge;
   };
-  /// Stops at the first point within sqrt(`enough_sq`) of p.
   static Nearest nearest_outside(const Core& c, const Vec3T<S>& p, const S* above,
                                  S enough_sq = S(-1)) {
-    Nearest out{p, std::numeric_limits<S>::infinity(), -1};
+    // A face p projects into is decided first, and alone: its foot is the nearest point (the
+    // distance is at least p's height above every plane). Compared by squared distance with the
+    // points of its edges, which the faces beyond an obtuse edge offer, it can lose to rounding
+    // to an edge point a little off it, whose direction is then tilted by up to 1e-7 rad (the
+    // support along it moves to the face's far side; found by review on an octahedron).
+    for (std::uint32_t f = 0; f < c.face_count; ++f) {
+      if (!(above[f] > S(0))) continue;
+      bool in_face = true;
+      for (std::uint32_t k = c.edge_begin[f]; k < c.edge_begin[f + 1] && in_face; ++k)
+        in_face = c.inward[k].dot(p - c.corner[k]) >= S(0);
+      if (in_face)
+        return {p - above[f] * c.normal(f), above[f] * above[f], int(f), Vec3T<S>::Zero()};
+    }
+    // The edges p lies beyond. Points whose squared distances differ by less than their rounding
+    // (a few eps of the coordinates times the distance) are equally near: an edge's interior
+    // point is preferred to a corner there, as its gap is orthogonal to the edge.
+    const S rounding =
+        S(64) * std::numeric_limits<S>::epsilon() * (p.cwiseAbs().maxCoeff() + c.largest);
+    Nearest out{p, std::numeric_limits<S>::infinity(), -1, Vec3T<S>::Zero()};
     for (std::uint32_t f = 0; f < c.face_count; ++f) {
       if (!(above[f] > S(0))) continue;
       const std::uint32_t begin = c.edge_begin[f], end = c.edge_begin[f + 1];
-      bool in_face = true;
       for (std::uint32_t k = begin; k < end; ++k) {
         const Vec3T<S> from_corner = p - c.corner[k];
         if (c.inward[k].dot(from_corner) >= S(0)) continue;
-        in_face = false;
         const Vec3T<S> edge = c.corner[k + 1 == end ? begin : k + 1] - c.corner[k];
         const S edge_sq = edge.squaredNorm();
         const S t = edge_sq > S(0) ? std::clamp(from_corner.dot(edge) / edge_sq, S(0), S(1)) : S(0);
         const Vec3T<S> q = c.corner[k] + t * edge;
         const S distance_sq = (p - q).squaredNorm();
-        if (distance_sq < out.distance_sq) out = {q, distance_sq, -1};
+        const bool inside_edge = t > S(0) && t < S(1);
+        const S slack = rounding * std::sqrt(distance_sq);
+        if (distance_sq < out.distance_sq - slack ||
+            (inside_edge && out.edge == Vec3T<S>::Zero() && distance_sq <= out.distance_sq + slack))
+          out = {q, distance_sq, -1, inside_edge ? edge : Vec3T<S>::Zero()};
+        if (out.distance_sq <= enough_sq) return out;
       }
-      if (in_face && above[f] * above[f] < out.distance_sq)
-        out = {p - above[f] * c.normal(f), above[f] * above[f], int(f)};
-      if (out.distance_sq <= enough_sq) break;
     }
     return out;
   }
@@ -298,12 +317,14 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
     }
     // An edge or a corner: the direction of the gap, whose rounding (eps of the coordinates)
     // tilts it by eps |p| / |gap|; such a tilt moves the support to the next corner, by the tilt
-    // times an edge's length. Kept below 1e3 eps.
+    // times an edge's length. Kept below 1e3 eps, and none along an edge the point is inside.
     const S scale_sq = p.squaredNorm() + c.largest * c.largest;
     if (!(nearest.distance_sq >= S(1e-6) * scale_sq)) return std::nullopt;
-    const Vec3T<S> gap = p - nearest.point;
+    Vec3T<S> gap = p - nearest.point;
+    if (nearest.edge != Vec3T<S>::Zero())
+      gap -= (gap.dot(nearest.edge) / nearest.edge.squaredNorm()) * nearest.edge;
     out.signed_distance = std::sqrt(nearest.distance_sq);
-    out.out_of_solid = gap / out.signed_distance;
+    out.out_of_solid = unit_of(gap);
     return out;
   }
 };

@@ -192,6 +192,43 @@ TEST(PointPolytope, PlanesOnlyWhereExact) {
   EXPECT_EQ(mink::Polytope::make(round)->build_face_planes(), nullptr);  // 76 faces
 }
 
+/// A centre above a face of an octahedron (obtuse edges), a little inside the face from an edge:
+/// it is also above the next face, whose pass offers the shared edge, at a squared distance equal
+/// to the face's to rounding. The face's foot is the answer; the edge point, taken on rounding,
+/// tilted the normal by up to 1e-7 rad (found in review: 1e-7 of the size off in support).
+TEST(PointPolytope, CentreAboveAFaceNearAnObtuseEdge) {
+  const std::vector<Vec3> octahedron = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                        {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+  const auto p = mink::Polytope::make(octahedron).value();
+  ASSERT_NE(p.build_face_planes(), nullptr);
+  Rng rng(11);
+  double worst = 0;
+  for (int i = 0; i < 4000; ++i) {
+    // A face (its corners x e_x, y e_y, z e_z for signs x, y, z) and one of its edges: a point of
+    // the edge, moved into the face by delta and out along its normal n by height.
+    const Vec3 signs(rng.chance(0.5) ? 1 : -1, rng.chance(0.5) ? 1 : -1, rng.chance(0.5) ? 1 : -1);
+    const Vec3 n = signs.normalized();
+    const int j = rng.integer(0, 2), k = (j + 1) % 3, m = (j + 2) % 3;
+    const Vec3 from = signs[j] * Vec3::Unit(j), to = signs[k] * Vec3::Unit(k);
+    const Vec3 opposite = signs[m] * Vec3::Unit(m);
+    const Vec3 on_edge = from + rng.uniform(0.05, 0.95) * (to - from);
+    const Vec3 into_face = opposite - on_edge;
+    const Vec3 in_plane = (into_face - into_face.dot(n) * n).normalized();
+    const double height = rng.log_uniform(1e-3, 3), delta = rng.log_uniform(1e-12, 1e-4);
+    const Vec3 c = on_edge + delta * in_plane + height * n;
+    const auto got = mink::distance(p, Pose::identity(), mink::Point{}, Pose::from_translation(c));
+    ASSERT_EQ(got.status, mink::Status::Separated);
+    // The octahedron's support along the normal: its largest |coordinate|.
+    const double h = got.normal.cwiseAbs().maxCoeff();
+    const double gap = got.normal.dot(c) - h;  // the separation the normal proves
+    worst = std::max(worst, got.distance - gap);
+    EXPECT_NEAR(got.distance, height, 1e-13) << "delta " << delta;
+    EXPECT_LE(got.distance - gap, 1e-12)
+        << "normal " << got.normal.transpose() << ", delta " << delta << ", height " << height;
+  }
+  std::printf("[  worst   ] octahedron: normal short of the distance by %.3g\n", worst);
+}
+
 /// A sphere whose centre lies on the polytope's surface or within 1e-12 of an edge from outside:
 /// the gap's direction would be rounding, so GJK and EPA answer, and the answers still hold.
 TEST(PointPolytope, CentreOnTheSurfaceOrAnEdge) {
