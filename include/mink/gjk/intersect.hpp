@@ -45,7 +45,9 @@ namespace detail {
 template <class S>
 [[gnu::always_inline]] inline void intersect_from_core_gap(const Vec3T<S>& gap, S reach,
                                                            IntersectResultT<S>& result) {
-  const S gap_sq = gap.squaredNorm();
+  // One coordinate at a time: the gap often comes through memory, stored a coordinate at a time,
+  // and a packed load of two stalls on store forwarding (6 ns of a sphere-polytope test).
+  const S gap_sq = gap.x() * gap.x() + gap.y() * gap.y() + gap.z() * gap.z();
   if (!(gap_sq <= std::numeric_limits<S>::max())) {
     result.error = kOverflowError;
     return;

@@ -64,17 +64,24 @@ struct PointSolidLocal {
 template <class T>
 struct SolidCore : std::false_type {};
 
+/// gap() for a solid whose nearest point to p is a clamp (Solid::clamp(core, p)): exact, whatever
+/// the reach.
+template <class Solid>
+struct GapOfClamp {
+  template <class Core, class S>
+  static std::optional<Vec3T<S>> gap(const Core& c, const Vec3T<S>& p, S) {
+    return p - Solid::clamp(c, p);
+  }
+};
+
 /// A box: the clamp to its extents; inside, out through the face nearest to p. Ties: p as deep
 /// below two faces, or on the centre plane of the nearest one (then the + face).
 template <class S>
-struct SolidCore<BoxT<S>> : std::true_type {
+struct SolidCore<BoxT<S>> : std::true_type, GapOfClamp<SolidCore<BoxT<S>>> {
   using Core = BoxT<S>;
   static const Core* core(const BoxT<S>& b) { return &b; }
   static Vec3T<S> clamp(const Core& b, const Vec3T<S>& p) {
     return p.cwiseMax(-b.half_extents).cwiseMin(b.half_extents);
-  }
-  static std::optional<Vec3T<S>> gap(const Core& b, const Vec3T<S>& p, S) {
-    return p - clamp(b, p);
   }
   static std::optional<PointSolidLocal<S>> local(const Core& b, const Vec3T<S>& p) {
     const Vec3T<S>& h = b.half_extents;
@@ -110,7 +117,7 @@ struct SolidCore<BoxT<S>> : std::true_type {
 /// near; p on the axis with the side nearest (every radial direction: then +x); p on the centre
 /// plane with a cap nearest (then the + cap).
 template <class S>
-struct SolidCore<CylinderT<S>> : std::true_type {
+struct SolidCore<CylinderT<S>> : std::true_type, GapOfClamp<SolidCore<CylinderT<S>>> {
   using Core = CylinderT<S>;
   static const Core* core(const CylinderT<S>& c) { return &c; }
 
@@ -130,9 +137,6 @@ struct SolidCore<CylinderT<S>> : std::true_type {
     const S z = std::clamp(p.z(), -c.half_height, c.half_height);
     if (rho <= c.radius) return {p.x(), p.y(), z};
     return {ux * c.radius, uy * c.radius, z};
-  }
-  static std::optional<Vec3T<S>> gap(const Core& c, const Vec3T<S>& p, S) {
-    return p - clamp(c, p);
   }
   static std::optional<PointSolidLocal<S>> local(const Core& c, const Vec3T<S>& p) {
     PointSolidLocal<S> out;
@@ -190,9 +194,13 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
 
   static constexpr S kLargest = power_of_two<S>(std::numeric_limits<S>::max_exponent / 2 - 24);
 
-  /// The signed distances of p from the face planes (positive above), into `above`; returns the
-  /// largest.
-  static S plane_distances(const Core& c, const Vec3T<S>& p, S* above) {
+  /// The signed distances of p from the face planes (positive above), into `above` unless it is
+  /// null; returns the largest, or nothing for p beyond kLargest.
+  static std::optional<S> plane_distances(const Core& c, const Vec3T<S>& p, S* above) {
+    // Coordinate by coordinate: p was computed so, and a packed load of two stalls on store
+    // forwarding.
+    if (!(std::max({std::abs(p.x()), std::abs(p.y()), std::abs(p.z())}) <= kLargest))
+      return std::nullopt;
     const std::size_t n = c.scan_count();  // a multiple of 4: whole SIMD blocks, padding -inf
 #if defined(__AVX2__) || defined(__SSE2__)
     if constexpr (std::is_same_v<S, double>) {
@@ -205,7 +213,7 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
                                                      lane_mul(lane_load(c.ny.data() + f), py)),
                                             lane_mul(lane_load(c.nz.data() + f), pz)),
                                    lane_load(c.offset.data() + f));
-        lane_store(above + f, d);
+        if (above) lane_store(above + f, d);
         largest = lane_max(largest, d);
       }
       return lane_hmax(largest);
@@ -213,11 +221,84 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
 #endif
     S largest = -std::numeric_limits<S>::infinity();
     for (std::size_t f = 0; f < n; ++f) {
-      above[f] = c.nx[f] * p.x() + c.ny[f] * p.y() + c.nz[f] * p.z() - c.offset[f];
-      largest = std::max(largest, above[f]);
+      const S d = c.nx[f] * p.x() + c.ny[f] * p.y() + c.nz[f] * p.z() - c.offset[f];
+      if (above) above[f] = d;
+      largest = std::max(largest, d);
     }
     return largest;
   }
+  /// For each corner w (padding included), |p - w|^2 into `distance_sq`; returns the smallest.
+  static S corner_distances(const Core& c, const Vec3T<S>& p, S* distance_sq) {
+    const std::size_t n = c.corner_scan_count();
+#if defined(__AVX2__) || defined(__SSE2__)
+    if constexpr (std::is_same_v<S, double>) {
+      // The smallest as the largest negated, in registers: the same lane helpers as the planes.
+      const LaneVec px = lane_set1(p.x()), py = lane_set1(p.y()), pz = lane_set1(p.z());
+      const LaneVec zero = lane_set1(0.0);
+      LaneVec largest = lane_set1(-std::numeric_limits<double>::infinity());
+      for (std::size_t i = 0; i < n; i += kLaneWidth) {
+        const LaneVec dx = lane_sub(px, lane_load(c.cx.data() + i));
+        const LaneVec dy = lane_sub(py, lane_load(c.cy.data() + i));
+        const LaneVec dz = lane_sub(pz, lane_load(c.cz.data() + i));
+        const LaneVec sq = lane_add(lane_add(lane_mul(dx, dx), lane_mul(dy, dy)), lane_mul(dz, dz));
+        lane_store(distance_sq + i, sq);
+        largest = lane_max(largest, lane_sub(zero, sq));
+      }
+      return -lane_hmax(largest);
+    }
+#endif
+    S smallest = std::numeric_limits<S>::infinity();
+    for (std::size_t i = 0; i < n; ++i) {
+      distance_sq[i] = (p - c.corner_point(i)).squaredNorm();
+      smallest = std::min(smallest, distance_sq[i]);
+    }
+    return smallest;
+  }
+  /// For each corner w (padding included), d . w into `dots`; returns the largest.
+  static S corner_dots(const Core& c, const Vec3T<S>& d, S* dots) {
+    const std::size_t n = c.corner_scan_count();
+#if defined(__AVX2__) || defined(__SSE2__)
+    if constexpr (std::is_same_v<S, double>) {
+      const LaneVec dx = lane_set1(d.x()), dy = lane_set1(d.y()), dz = lane_set1(d.z());
+      LaneVec largest = lane_set1(-std::numeric_limits<double>::infinity());
+      for (std::size_t i = 0; i < n; i += kLaneWidth) {
+        const LaneVec dot = lane_add(lane_add(lane_mul(lane_load(c.cx.data() + i), dx),
+                                              lane_mul(lane_load(c.cy.data() + i), dy)),
+                                     lane_mul(lane_load(c.cz.data() + i), dz));
+        lane_store(dots + i, dot);
+        largest = lane_max(largest, dot);
+      }
+      return lane_hmax(largest);
+    }
+#endif
+    S largest = -std::numeric_limits<S>::infinity();
+    for (std::size_t i = 0; i < n; ++i) {
+      dots[i] = c.cx[i] * d.x() + c.cy[i] * d.y() + c.cz[i] * d.z();
+      largest = std::max(largest, dots[i]);
+    }
+    return largest;
+  }
+
+  /// The yes/no test for p outside, within reach of every face plane, by the corner v nearest to
+  /// p, which decides most such points for a few dozen flops (nearest_outside() walks the edges
+  /// of every face p is above). Within reach: p - v. Else, with d = p - v, the polytope lies
+  /// where d . x <= h, h the largest d . w over the corners, so p is at least
+  /// (|d|^2 - (h - d . v)) / |d| from it: beyond reach, d itself (longer than reach) will do; it
+  /// is exact when v is the nearest point, which is where p lies in v's normal cone. Nothing: an
+  /// edge or a face may be within reach.
+  static std::optional<Vec3T<S>> gap_by_corner(const Core& c, const Vec3T<S>& p, S reach) {
+    alignas(32) std::array<S, Core::kMaxCorners> values;
+    const S nearest_sq = corner_distances(c, p, values.data());
+    std::size_t v = 0;
+    while (v + 1 < c.corner_count && values[v] != nearest_sq) ++v;
+    const Vec3T<S> d = p - c.corner_point(v);
+    if (nearest_sq <= reach * reach) return d;
+    // Both dots from the same scan: h - d . v >= 0 exactly.
+    const S support = corner_dots(c, d, values.data());
+    if (nearest_sq - (support - values[v]) > reach * std::sqrt(nearest_sq)) return d;
+    return std::nullopt;
+  }
+
   /// The first face whose distance is `largest`.
   static std::uint32_t face_at(const Core& c, const S* above, S largest) {
     std::uint32_t f = 0;
@@ -229,71 +310,85 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
   /// holds it (-1: an edge or a corner), and the edge whose interior holds it (else 0). It lies on
   /// a face p is above (at an edge or a corner, p - q is a positive combination of the faces'
   /// normals there, so p is above one of them): at p's foot on that face when p projects into
-  /// it, else on an edge p lies beyond. Stops at the first point within sqrt(`enough_sq`) of p.
+  /// it, else on an edge p lies beyond.
+  ///
+  /// One pass over the faces p is above. A face p projects into is decided alone, whatever edge
+  /// points came before it: its foot is the nearest point (the distance is at least p's height
+  /// above every plane). Compared by squared distance with the points of its edges, which the
+  /// faces beyond an obtuse edge offer, it can lose to rounding to an edge point a little off it,
+  /// whose direction is then tilted by up to 1e-7 rad (the support along it moves to the face's
+  /// far side; found by review on an octahedron).
+  ///
+  /// kExact (local()): among edge points whose squared distances differ by less than their
+  /// rounding (a few eps of the coordinates times the distance), an edge's interior point is
+  /// preferred to a corner, as its gap is orthogonal to the edge. Otherwise (gap(): yes or no)
+  /// the search stops at the first point within sqrt(`enough_sq`) of p, and any face p projects
+  /// into is within it (gap() searches only when every height is).
   struct Nearest {
     Vec3T<S> point;
     S distance_sq;
     int face;
     Vec3T<S> edge;
   };
+  template <bool kExact>
   static Nearest nearest_outside(const Core& c, const Vec3T<S>& p, const S* above,
                                  S enough_sq = S(-1)) {
-    // A face p projects into is decided first, and alone: its foot is the nearest point (the
-    // distance is at least p's height above every plane). Compared by squared distance with the
-    // points of its edges, which the faces beyond an obtuse edge offer, it can lose to rounding
-    // to an edge point a little off it, whose direction is then tilted by up to 1e-7 rad (the
-    // support along it moves to the face's far side; found by review on an octahedron).
-    for (std::uint32_t f = 0; f < c.face_count; ++f) {
-      if (!(above[f] > S(0))) continue;
-      bool in_face = true;
-      for (std::uint32_t k = c.edge_begin[f]; k < c.edge_begin[f + 1] && in_face; ++k)
-        in_face = c.inward[k].dot(p - c.corner[k]) >= S(0);
-      if (in_face)
-        return {p - above[f] * c.normal(f), above[f] * above[f], int(f), Vec3T<S>::Zero()};
-    }
-    // The edges p lies beyond. Points whose squared distances differ by less than their rounding
-    // (a few eps of the coordinates times the distance) are equally near: an edge's interior
-    // point is preferred to a corner there, as its gap is orthogonal to the edge.
     const S rounding =
-        S(64) * std::numeric_limits<S>::epsilon() * (p.cwiseAbs().maxCoeff() + c.largest);
+        kExact ? S(64) * std::numeric_limits<S>::epsilon() * (p.cwiseAbs().maxCoeff() + c.largest)
+               : S(0);
     Nearest out{p, std::numeric_limits<S>::infinity(), -1, Vec3T<S>::Zero()};
     for (std::uint32_t f = 0; f < c.face_count; ++f) {
       if (!(above[f] > S(0))) continue;
       const std::uint32_t begin = c.edge_begin[f], end = c.edge_begin[f + 1];
+      bool in_face = true;
       for (std::uint32_t k = begin; k < end; ++k) {
         const Vec3T<S> from_corner = p - c.corner[k];
         if (c.inward[k].dot(from_corner) >= S(0)) continue;
+        in_face = false;
         const Vec3T<S> edge = c.corner[k + 1 == end ? begin : k + 1] - c.corner[k];
         const S edge_sq = edge.squaredNorm();
         const S t = edge_sq > S(0) ? std::clamp(from_corner.dot(edge) / edge_sq, S(0), S(1)) : S(0);
         const Vec3T<S> q = c.corner[k] + t * edge;
         const S distance_sq = (p - q).squaredNorm();
-        const bool inside_edge = t > S(0) && t < S(1);
-        const S slack = rounding * std::sqrt(distance_sq);
-        if (distance_sq < out.distance_sq - slack ||
-            (inside_edge && out.edge == Vec3T<S>::Zero() && distance_sq <= out.distance_sq + slack))
-          out = {q, distance_sq, -1, inside_edge ? edge : Vec3T<S>::Zero()};
-        if (out.distance_sq <= enough_sq) return out;
+        if constexpr (kExact) {
+          const bool inside_edge = t > S(0) && t < S(1);
+          const S slack = rounding * std::sqrt(distance_sq);
+          if (distance_sq < out.distance_sq - slack ||
+              (inside_edge && out.edge == Vec3T<S>::Zero() &&
+               distance_sq <= out.distance_sq + slack))
+            out = {q, distance_sq, -1, inside_edge ? edge : Vec3T<S>::Zero()};
+        } else {
+          if (distance_sq < out.distance_sq) out = {q, distance_sq, -1, Vec3T<S>::Zero()};
+          if (out.distance_sq <= enough_sq) return out;
+        }
       }
+      if (in_face)
+        return {p - above[f] * c.normal(f), above[f] * above[f], int(f), Vec3T<S>::Zero()};
     }
     return out;
   }
 
   static std::optional<Vec3T<S>> gap(const Core& c, const Vec3T<S>& p, S reach) {
-    if (!(p.cwiseAbs().maxCoeff() <= kLargest)) return std::nullopt;
-    alignas(32) std::array<S, Core::kMaxFaces> above;
-    const S largest = plane_distances(c, p, above.data());
+    // The distances are kept only for the edge search, which few points need; the stores cost
+    // more than their time (one run in three was 50 % slower, from where the stack fell).
+    const std::optional<S> scanned = plane_distances(c, p, nullptr);
+    if (!scanned) return std::nullopt;
+    const S largest = *scanned;
     if (largest <= S(0)) return Vec3T<S>::Zero();
     // Farther from a plane than reach: as far from the polytope. Any vector that long will do.
     if (largest > reach) return Vec3T<S>(largest, S(0), S(0));
+    if (const auto by_corner = gap_by_corner(c, p, reach)) return by_corner;
     if (c.face_count > kNearestMaxFaces) return std::nullopt;
-    return Vec3T<S>(p - nearest_outside(c, p, above.data(), reach * reach).point);
+    alignas(32) std::array<S, Core::kMaxFaces> above;
+    plane_distances(c, p, above.data());
+    return Vec3T<S>(p - nearest_outside<false>(c, p, above.data(), reach * reach).point);
   }
 
   static std::optional<PointSolidLocal<S>> local(const Core& c, const Vec3T<S>& p) {
-    if (!(p.cwiseAbs().maxCoeff() <= kLargest)) return std::nullopt;
     alignas(32) std::array<S, Core::kMaxFaces> above;
-    const std::uint32_t best = face_at(c, above.data(), plane_distances(c, p, above.data()));
+    const std::optional<S> largest = plane_distances(c, p, above.data());
+    if (!largest) return std::nullopt;
+    const std::uint32_t best = face_at(c, above.data(), *largest);
     PointSolidLocal<S> out;
     out.p = p;
     out.tie = false;
@@ -308,7 +403,7 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
       return out;
     }
     if (c.face_count > kNearestMaxFaces) return std::nullopt;
-    const Nearest nearest = nearest_outside(c, p, above.data());
+    const Nearest nearest = nearest_outside<true>(c, p, above.data());
     out.on_solid = nearest.point;
     if (nearest.face >= 0) {
       out.out_of_solid = c.normal(std::size_t(nearest.face));
@@ -360,10 +455,13 @@ struct CorePair {
 };
 
 /// The point core of a point-core shape in the frame of a solid-core shape (either order).
+/// Always inlined: out of line, GCC returned the point through memory, stored a coordinate at a
+/// time and loaded two at a time, which stalls on store forwarding (a sphere against a small
+/// polytope: 37 -> ? ns a query).
 template <class A, class B>
-Vec3T<typename A::Scalar> point_in_solid_frame(const A& a, const PoseT<typename A::Scalar>& pose_a,
-                                               const B& b,
-                                               const PoseT<typename A::Scalar>& pose_b) {
+[[gnu::always_inline]] inline Vec3T<typename A::Scalar> point_in_solid_frame(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b) {
   if constexpr (SolidCore<A>::value)
     return pose_a.inverse_rotate(SegmentCore<B>::world(b, pose_b, pose_a.translation).centre);
   else

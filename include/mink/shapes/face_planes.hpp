@@ -30,6 +30,8 @@ struct FacePlanesT {
   static constexpr std::size_t kMaxFaces = 32;
   /// Half-edges: 2 E, and E <= 3 F - 6 (Euler's formula with at least 3 edges at every vertex).
   static constexpr std::size_t kMaxEdges = 6 * kMaxFaces - 12;
+  /// Corners: V <= 2 F - 4 (the dual of F >= V / 2 + 2), a multiple of 4.
+  static constexpr std::size_t kMaxCorners = 2 * kMaxFaces - 4;
 
   std::uint32_t face_count = 0;
   /// The largest coordinate of the points: the scale of the planes' rounding.
@@ -45,6 +47,10 @@ struct FacePlanesT {
   std::array<Vec3T<S>, kMaxEdges> corner;
   /// normal x (next corner - corner[k]): in the face's plane, pointing into the face.
   std::array<Vec3T<S>, kMaxEdges> inward;
+  /// The hull's vertices (cx, cy, cz)[i], for scans: entries from corner_count up to the next
+  /// multiple of 4 repeat vertex 0.
+  std::uint32_t corner_count = 0;
+  alignas(32) std::array<S, kMaxCorners> cx{}, cy{}, cz{};
 
   /// Face planes of `hull`, or nothing when they would not give exact answers (see the file
   /// comment). `points` are the points the hull was built from: their largest coordinate sets the
@@ -88,6 +94,14 @@ struct FacePlanesT {
       edges += face.count;
     }
     planes.edge_begin[hull.faces.size()] = std::uint8_t(edges);
+    if (hull.vertices.size() > kMaxCorners) return std::nullopt;  // not a polytope's hull
+    planes.corner_count = std::uint32_t(hull.vertices.size());
+    for (std::size_t i = 0; i < planes.corner_scan_count(); ++i) {
+      const Vec3& v = hull.vertices[i < hull.vertices.size() ? i : 0].position;
+      planes.cx[i] = S(v.x());
+      planes.cy[i] = S(v.y());
+      planes.cz[i] = S(v.z());
+    }
     for (std::size_t f = hull.faces.size(); f < kMaxFaces; ++f)
       planes.offset[f] = std::numeric_limits<S>::infinity();
     return planes;
@@ -97,6 +111,11 @@ struct FacePlanesT {
   /// Faces rounded up to a multiple of 4, the padding included: the length of the plane scan.
   std::size_t scan_count() const {
     return std::min<std::size_t>((face_count + 3) & ~3u, kMaxFaces);
+  }
+  Vec3T<S> corner_point(std::size_t i) const { return {cx[i], cy[i], cz[i]}; }
+  /// Corners rounded up to a multiple of 4, the padding included: the length of a corner scan.
+  std::size_t corner_scan_count() const {
+    return std::min<std::size_t>((corner_count + 3) & ~3u, kMaxCorners);
   }
 };
 

@@ -47,6 +47,9 @@ struct LazyBuild {
   /// nothing: the shape goes on without it for good).
   template <class Build>
   void count_towards(std::uint32_t after, Build&& build) {
+    // Once built, being built, or failed, a query neither counts nor tries: a shape whose build
+    // failed would otherwise pay a store and a compare-and-swap on every query, for good.
+    if (state.load(std::memory_order_relaxed) != kCounting) return;
     const std::uint32_t n = count.load(std::memory_order_relaxed) + 1;
     count.store(n, std::memory_order_relaxed);
     if (n >= after) build_now(build);

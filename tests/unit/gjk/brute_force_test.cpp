@@ -221,10 +221,17 @@ TEST(GjkDistance, BoxBoxClosedFormMatchesBruteForce) {
     const oracle::SupportFn support_b = [&](const V3& u) {
       return oracle::box_support(wb)(u) + Real(radius_b) * u.norm();
     };
-    oracle::expect_contact_matches(
-        oracle::least_support_of_difference(ca, cb) + Real(radius_a + radius_b), support_a,
-        support_b, got_contact, size, pa.translation.norm(), contact_worst);
+    // The depth by facet enumeration over the 64 corner differences only where the pair may
+    // overlap: for separated convex sets the least support of A - B over unit directions is minus
+    // their distance (the separating direction attains it), which brute force has just given.
+    // The enumeration was two thirds of this test's time.
     const double gap = static_cast<double>(expected.gap);
+    const Real expected_depth =
+        gap > 2 * oracle::kTouchingBand * size
+            ? -expected.gap
+            : oracle::least_support_of_difference(ca, cb) + Real(radius_a + radius_b);
+    oracle::expect_contact_matches(expected_depth, support_a, support_b, got_contact, size,
+                                   pa.translation.norm(), contact_worst);
     if (gap > oracle::kTouchingBand * size) {
       ++separated[kind];
       if (got.iterations == 0) ++closed_form[kind];

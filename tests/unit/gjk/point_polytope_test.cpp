@@ -157,6 +157,48 @@ TEST(PointPolytope, SpheresAgainstFacePlanesMatchBruteForce) {
   sweep(610000, 3000, "sphere-polytope (face planes)");
 }
 
+/// The yes/no test where it is closest to call: a sphere whose radius is the centre's distance
+/// from the polytope (brute force, long double) plus or minus 1e-10 .. 1e-1 of the size, centres
+/// near corners, edges and faces, outside the polytope (where the corner test and the edge search
+/// decide; inside, the planes alone). Touching counts within 1e-12 of the size, far below.
+TEST(PointPolytope, BooleanAtTouchingMatchesBruteForce) {
+  const int n = oracle::sweep_count(4000);
+  int decided = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = 640000 + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const int kind = rng.chance(0.5) ? kRound : rng.integer(0, kNearlyCoplanar);
+    const double scale = rng.log_uniform(0.05, 2);
+    const auto local = point_set(rng, kind, scale);
+    const auto polytope = mink::Polytope::make(local);
+    ASSERT_TRUE(polytope);
+    if (!polytope->build_face_planes()) continue;
+    const Pose pb = rng.pose(rng.chance(0.2) ? 1e4 : 5);
+    const Vec3 centre_local = centre_near(rng, local, scale);
+    const Pose pa = Pose::from(pb.apply(centre_local), rng.rotation());
+    const auto core =
+        oracle::polytope_pair({widen(pa.translation)}, oracle::world_points(local, pb));
+    const double position = pb.translation.norm();
+    const double size = 2 * polytope->bounding_radius();
+    // The touching tolerance (1e-12 of the size) and the rounding of coordinates `position` from
+    // the origin stay far below the margin.
+    const double margin = (size + 1e-6 * position) * rng.log_uniform(1e-10, 1e-1);
+    if (!(double(core.distance) > 2 * margin)) continue;
+    const bool overlap = rng.chance(0.5);
+    const mink::Sphere sphere{double(core.distance) + (overlap ? margin : -margin)};
+    const bool sphere_first = rng.chance(0.5);
+    const auto got = sphere_first ? mink::intersect(sphere, pa, *polytope, pb)
+                                  : mink::intersect(*polytope, pb, sphere, pa);
+    ASSERT_EQ(got.error, nullptr);
+    EXPECT_EQ(got.intersect, overlap)
+        << "distance " << double(core.distance) << ", margin " << margin << ", kind " << kind
+        << ", sphere first " << sphere_first;
+    ++decided;
+  }
+  EXPECT_GT(decided, n / 3);
+}
+
 /// Face planes exist only for solid hulls flat to rounding, of at most FacePlanes::kMaxFaces
 /// faces, and the polytope builds them after kPolytopePlanesAfterQueries point queries.
 TEST(PointPolytope, PlanesOnlyWhereExact) {
