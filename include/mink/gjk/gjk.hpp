@@ -671,8 +671,9 @@ template <ConvexShape A, ConvexShape B>
 template <ConvexShape A, ConvexShape B>
 CoreDifference<A, B> make_core_difference(const A& a, const PoseT<typename A::Scalar>& pose_a,
                                           const B& b, const PoseT<typename A::Scalar>& pose_b) {
-  const PoseT<typename A::Scalar> relative = pose_a.relative(pose_b);
-  return {a, b, relative.rotation, relative.translation};
+  CoreDifference<A, B> diff{a, b, {}, {}};
+  pose_a.relative(pose_b, diff.rotation, diff.translation);
+  return diff;
 }
 
 }  // namespace mink::detail

@@ -214,7 +214,7 @@ template <class S>
 template <class S>
 SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
   const Vec3T<S> e1 = w[1] - w[0], e2 = w[2] - w[0], e3 = w[3] - w[0];
-  const S det = e1.dot(e2.cross(e3));
+  const S det = triple_product(e1, e2, e3);
   // Barycentric volumes: c[i] is the volume with w[i] replaced by the origin. Each is written as
   // a vertex dotted with a cross product of *edges*, never as a triple product of the raw
   // points: near convergence on a curved surface the points crowd within 1e-5 of each other
@@ -222,8 +222,8 @@ SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
   // carry an absolute error (eps |w|^3) larger than that. The edge form keeps the error relative
   // to the (small) face areas, so the signs that pick the faces stay right.
   const Vec3T<S> f2 = w[2] - w[1], f3 = w[3] - w[1];
-  const S c[4] = {w[1].dot(f2.cross(f3)), -w[0].dot(e2.cross(e3)), -w[0].dot(e3.cross(e1)),
-                  -w[0].dot(e1.cross(e2))};
+  const S c[4] = {triple_product(w[1], f2, f3), -triple_product(w[0], e2, e3),
+                  -triple_product(w[0], e3, e1), -triple_product(w[0], e1, e2)};
   static constexpr int kFace[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
   SubSimplex<S> best;
   const bool flat =

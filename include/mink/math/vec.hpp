@@ -37,6 +37,16 @@ constexpr S power_of_two(int k) {
   return x;
 }
 
+/// a . (b x c), coordinate by coordinate. Through Eigen's cross() and dot(), GCC computed the
+/// cross product in scalars, stored it and loaded it back as a vector for the dot product: a
+/// load that stalls on store forwarding, five of them in each of GJK's tetrahedron tests.
+template <class S>
+[[gnu::always_inline]] inline S triple_product(const Vec3T<S>& a, const Vec3T<S>& b,
+                                               const Vec3T<S>& c) {
+  return a.x() * (b.y() * c.z() - b.z() * c.y()) + a.y() * (b.z() * c.x() - b.x() * c.z()) +
+         a.z() * (b.x() * c.y() - b.y() * c.x());
+}
+
 /// |v| from its square `v_sq` (= v.squaredNorm()), also where that square underflows (vectors of
 /// 1e-154 and shorter: the root of the rounded square is off by up to 1e-3, and a normal
 /// v / |v| then is not unit) or overflows (1e154 and longer): Eigen's stableNorm() rescales first.
