@@ -199,6 +199,51 @@ TEST(PointPolytope, BooleanAtTouchingMatchesBruteForce) {
   EXPECT_GT(decided, n / 3);
 }
 
+/// A rotated cube with points on its edges: its hull splits each face into triangles that are
+/// coplanar to rounding, whose planes differ by a few eps. A point on a face (the midpoint of two
+/// points of the face) lies on the surface; computed a little above a neighbouring triangle and a
+/// little below its own, it was searched for on the neighbour's edges only and came out 0.75 of
+/// the size away (found by review; the code before the fix fails 47 of the points here).
+TEST(PointPolytope, PointOnAFaceSplitIntoCoplanarTriangles) {
+  int with_planes = 0, queries = 0;
+  for (int i = 0; i < 200; ++i) {
+    const std::uint64_t seed = 650000 + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const mink::Mat3 rotation = rng.rotation().toRotationMatrix();
+    std::vector<Vec3> cube;  // in the cube's frame, then rotated
+    for (int k = 0; k < 8; ++k) cube.emplace_back(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+    for (int k = 0; k < 18; ++k) {
+      Vec3 q = cube[rng.integer(0, 7)];
+      q[rng.integer(0, 2)] = rng.uniform(-1, 1);  // along an edge
+      cube.push_back(q);
+    }
+    std::vector<Vec3> pts;
+    for (const Vec3& q : cube) pts.push_back(rotation * q);
+    const auto polytope = mink::Polytope::make(pts);
+    ASSERT_TRUE(polytope);
+    if (!polytope->build_face_planes()) continue;
+    ++with_planes;
+    for (int k = 0; k < 20; ++k) {
+      // Two points on one face of the cube (a coordinate +-1 in common): their midpoint is on it.
+      const int a = rng.integer(0, int(cube.size()) - 1), b = rng.integer(0, int(cube.size()) - 1);
+      const Vec3 shared = cube[a].cwiseProduct(cube[b]);
+      if (a == b || !(shared.maxCoeff() == 1)) continue;
+      const Vec3 on_face = 0.5 * (pts[a] + pts[b]);
+      ++queries;
+      const Pose at = Pose::from_translation(on_face);
+      const auto hit = mink::intersect(mink::Point{}, at, *polytope, Pose::identity());
+      EXPECT_TRUE(hit.intersect) << "point " << on_face.transpose();
+      const auto d = mink::distance(mink::Point{}, at, *polytope, Pose::identity());
+      EXPECT_LE(d.distance, 1e-12) << "point " << on_face.transpose();
+      const auto c = mink::contact(mink::Sphere{0.1}, at, *polytope, Pose::identity());
+      EXPECT_NEAR(c.depth, 0.1, 1e-12) << "point " << on_face.transpose();
+    }
+  }
+  EXPECT_GT(with_planes, 100);
+  EXPECT_GT(queries, 1000);
+}
+
 /// Face planes exist only for solid hulls flat to rounding, of at most FacePlanes::kMaxFaces
 /// faces, and the polytope builds them after kPolytopePlanesAfterQueries point queries.
 TEST(PointPolytope, PlanesOnlyWhereExact) {
