@@ -12,13 +12,14 @@ endfunction()
 
 run(${CMAKE_COMMAND} --install ${MINK_BUILD_DIR} --prefix ${prefix})
 # The compiler that built mink (a user links a library with the compiler that built it).
-set(flags "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
+set(flags "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}")
 if(SANITIZE)
   # The sanitizers' runtime must match the library's. -O1 without debug information, as the
   # library's own sanitized build: the build type's -O2 -g took 100 s for this one file.
-  set(flags "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" "-DCMAKE_BUILD_TYPE="
-            "-DCMAKE_CXX_FLAGS=-O1 -fsanitize=address,undefined"
-            "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
+  list(APPEND flags "-DCMAKE_BUILD_TYPE=" "-DCMAKE_CXX_FLAGS=-O1 -fsanitize=address,undefined"
+       "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
+else()
+  list(APPEND flags "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
 endif()
 run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build -G ${GENERATOR}
     -DCMAKE_PREFIX_PATH=${prefix} ${flags})

@@ -462,8 +462,8 @@ struct CorePair {
 
 /// The point core of a point-core shape in the frame of a solid-core shape (either order).
 /// Always inlined: out of line, GCC returned the point through memory, stored a coordinate at a
-/// time and loaded two at a time, which stalls on store forwarding (a sphere against a small
-/// polytope: 37 -> ? ns a query).
+/// time, for callers that load it two at a time, which stalls on store forwarding (with the range
+/// check's and intersect_from_core_gap()'s packed reads, a third of a sphere-polytope test).
 template <class A, class B>
 [[gnu::always_inline]] inline Vec3T<typename A::Scalar> point_in_solid_frame(
     const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
