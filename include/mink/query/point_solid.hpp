@@ -279,6 +279,26 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
     return largest;
   }
 
+  /// The corner v nearest to p, and |p - v|^2; `values` receives every corner's.
+  struct NearestCorner {
+    Vec3T<S> corner;
+    S distance_sq;
+    std::size_t index;
+  };
+  static NearestCorner nearest_corner(const Core& c, const Vec3T<S>& p, S* values) {
+    const S nearest_sq = corner_distances(c, p, values);
+    std::size_t v = 0;
+    while (v + 1 < c.corner_count && values[v] != nearest_sq) ++v;
+    return {c.corner_point(v), nearest_sq, v};
+  }
+  /// With d = p - v: h - d . v >= 0, h the largest d . w over the corners (the polytope's support
+  /// along d). Both dots come from the same scan, so a corner that attains the support gives
+  /// exactly 0.
+  static S support_beyond_corner(const Core& c, const Vec3T<S>& d, std::size_t v, S* values) {
+    const S support = corner_dots(c, d, values);
+    return support - values[v];
+  }
+
   /// The yes/no test for p outside, within reach of every face plane, by the corner v nearest to
   /// p, which decides most such points for a few dozen flops (nearest_outside() walks the edges
   /// of every face p is above). Within reach: p - v. Else, with d = p - v, the polytope lies
@@ -288,14 +308,11 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
   /// edge or a face may be within reach.
   static std::optional<Vec3T<S>> gap_by_corner(const Core& c, const Vec3T<S>& p, S reach) {
     alignas(32) std::array<S, Core::kMaxCorners> values;
-    const S nearest_sq = corner_distances(c, p, values.data());
-    std::size_t v = 0;
-    while (v + 1 < c.corner_count && values[v] != nearest_sq) ++v;
-    const Vec3T<S> d = p - c.corner_point(v);
-    if (nearest_sq <= reach * reach) return d;
-    // Both dots from the same scan: h - d . v >= 0 exactly.
-    const S support = corner_dots(c, d, values.data());
-    if (nearest_sq - (support - values[v]) > reach * std::sqrt(nearest_sq)) return d;
+    const NearestCorner v = nearest_corner(c, p, values.data());
+    const Vec3T<S> d = p - v.corner;
+    if (v.distance_sq <= reach * reach) return d;
+    const S beyond = support_beyond_corner(c, d, v.index, values.data());
+    if (v.distance_sq - beyond > reach * std::sqrt(v.distance_sq)) return d;
     return std::nullopt;
   }
 
@@ -394,19 +411,38 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
     alignas(32) std::array<S, Core::kMaxFaces> above;
     const std::optional<S> largest = plane_distances(c, p, above.data());
     if (!largest) return std::nullopt;
-    const std::uint32_t best = face_at(c, above.data(), *largest);
     PointSolidLocal<S> out;
     out.p = p;
     out.tie = false;
-    if (above[best] <= S(0)) {
+    if (*largest <= S(0)) {
       // Inside: the ball of radius -above[best] about p is below every plane, so inside, and the
       // foot of p on the nearest plane is on the surface.
+      const std::uint32_t best = face_at(c, above.data(), *largest);
       for (std::uint32_t f = 0; f < c.face_count; ++f)
         out.tie |= f != best && above[f] == above[best];
       out.out_of_solid = c.normal(best);
       out.on_solid = p - above[best] * out.out_of_solid;
       out.signed_distance = above[best];
       return out;
+    }
+    // An edge or a corner: the direction of the gap, whose rounding (eps of the coordinates)
+    // tilts it by eps |p| / |gap|; such a tilt moves the support to the next corner, by the tilt
+    // times an edge's length. Kept below 1e3 eps, and none along an edge the point is inside.
+    const S scale_sq = p.squaredNorm() + c.largest * c.largest;
+    {
+      // p in the normal cone of its nearest corner v (the support along p - v is at v): the
+      // polytope lies below the plane through v normal to p - v, so v is the nearest point. Most
+      // points outside a small polytope are there, and the edge walk costs ten times this.
+      alignas(32) std::array<S, Core::kMaxCorners> values;
+      const NearestCorner v = nearest_corner(c, p, values.data());
+      const Vec3T<S> d = p - v.corner;
+      if (v.distance_sq >= S(1e-6) * scale_sq &&
+          support_beyond_corner(c, d, v.index, values.data()) <= S(0)) {
+        out.on_solid = v.corner;
+        out.signed_distance = length_of(d, v.distance_sq);
+        out.out_of_solid = unit_of(d, v.distance_sq, out.signed_distance);
+        return out;
+      }
     }
     if (c.face_count > kNearestMaxFaces) return std::nullopt;
     const Nearest nearest = nearest_outside<true>(c, p, above.data());
@@ -416,10 +452,6 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
       out.signed_distance = above[std::size_t(nearest.face)];
       return out;
     }
-    // An edge or a corner: the direction of the gap, whose rounding (eps of the coordinates)
-    // tilts it by eps |p| / |gap|; such a tilt moves the support to the next corner, by the tilt
-    // times an edge's length. Kept below 1e3 eps, and none along an edge the point is inside.
-    const S scale_sq = p.squaredNorm() + c.largest * c.largest;
     if (!(nearest.distance_sq >= S(1e-6) * scale_sq)) return std::nullopt;
     Vec3T<S> gap = p - nearest.point;
     if (nearest.edge != Vec3T<S>::Zero())

@@ -47,7 +47,7 @@ void expect_witnesses_on_support_planes(const mink::DistanceResult& got,
 
 TEST(GjkDistance, BoxBoxMatchesBruteForceAndSat) {
   const std::uint64_t base = 10000;
-  const int n = oracle::sweep_count(1000);
+  const int n = oracle::sweep_count(1000, 300);
   oracle::Worst worst("box-box");
   int sat_separated = 0;
   for (int i = 0; i < n; ++i) {
@@ -136,7 +136,7 @@ TEST(GjkDistance, PolytopePairMatchesBruteForce) {
 /// their normal, flat and needle boxes, 1e3 scale ratios, 1e6 from the origin, and rounded boxes.
 TEST(GjkDistance, BoxBoxClosedFormMatchesBruteForce) {
   const std::uint64_t base = 90000;
-  const int n = oracle::sweep_count(1500);
+  const int n = oracle::sweep_count(1500, 500);
   oracle::Worst worst("box-box closed form");
   oracle::DepthWorst contact_worst("contact box-box closed form");
   int closed_form[5] = {}, separated[5] = {};
