@@ -139,7 +139,7 @@ template <class S>
 /// `first` (optional): the support point along diff.translation, already computed (and counted in
 /// `iterations`) by the caller, which is the first one this phase asks for.
 template <ConvexShape A, ConvexShape B>
-EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scalar inside_sq,
+EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scalar inside,
                               int max_supports, int& iterations,
                               Vec3T<typename A::Scalar> (&directions)[4], int& count,
                               const Vec3T<typename A::Scalar>* first = nullptr) {
@@ -166,7 +166,7 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
     if (!(wd >= S(0))) {
       // The support plane normal to d passes short of the origin: separated by -wd / |d|. It
       // decides only with room for the radii and the touching tolerance (NaN: not decided).
-      if (wd < S(0) && wd * wd > inside_sq * d.squaredNorm()) {
+      if (exceeds_times_length(-wd, inside, d, S(d.squaredNorm()))) {
         directions[0] = d;  // the separating direction: the best warm start
         count = 1;
         return EncloseVerdict::Separated;
@@ -287,11 +287,11 @@ inline constexpr int kEnclosePhaseSupports = 24;
 /// diff.translation, already computed.
 template <ConvexShape A, ConvexShape B>
 [[gnu::noinline]] bool enclose_first_phase(const CoreDifference<A, B>& diff,
-                                           typename A::Scalar inside_sq, int max_supports,
+                                           typename A::Scalar inside, int max_supports,
                                            int& iterations,
                                            Vec3T<typename A::Scalar> (&directions)[4], int& count,
                                            const Vec3T<typename A::Scalar>& first) {
-  return enclose_origin(diff, inside_sq, max_supports, iterations, directions, count, &first) ==
+  return enclose_origin(diff, inside, max_supports, iterations, directions, count, &first) ==
          EncloseVerdict::Intersecting;
 }
 
@@ -356,7 +356,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
   while (true) {
     SimplexT<S>& simplex = buffers[current];
     const S v_sq = v.squaredNorm();
-    if (v_in_set && (simplex.size == 4 || v_sq <= touch * touch)) {
+    if (v_in_set && (simplex.size == 4 || length_at_most(v, v_sq, touch))) {
       out.status = Status::Intersecting;
       break;
     }
@@ -374,9 +374,8 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
       Vec3T<S> directions[4];
       int count = 0;
       if (!(vw > touch * v_length) &&
-          enclose_first_phase(diff, touch * touch,
-                              std::min(kEnclosePhaseSupports, tol.max_iterations), out.iterations,
-                              directions, count, vertex.w)) {
+          enclose_first_phase(diff, touch, std::min(kEnclosePhaseSupports, tol.max_iterations),
+                              out.iterations, directions, count, vertex.w)) {
         out.status = Status::Intersecting;
         out.upper = S(0);
         save_cache(
@@ -528,7 +527,6 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>
   int count = 0;
   const S touch = tol.relative * size;
   const S inside = radius + touch;
-  const S inside_sq = inside * inside;
 
   // The closest point of points[0..n) to the origin; keeps only the sub-simplex that holds it.
   auto reduce = [&points, &directions, &count](const SubSimplex<S>& r, int n) {
@@ -546,7 +544,7 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>
     // Cores with no radius: the cheap first phase decides most pairs; the loop below takes the
     // rest (the origin near the boundary of A - B), from a fresh start.
     const EncloseVerdict verdict =
-        enclose_origin(diff, inside_sq, std::min(kEnclosePhaseSupports, tol.max_iterations),
+        enclose_origin(diff, inside, std::min(kEnclosePhaseSupports, tol.max_iterations),
                        out.iterations, directions, count);
     if (verdict != EncloseVerdict::Unsure) {
       out.status =
@@ -583,7 +581,7 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>
   bool stalled = false;
   while (true) {
     const S v_sq = v.squaredNorm();
-    if (v_in_set && (count == 4 || v_sq <= inside_sq)) {
+    if (v_in_set && (count == 4 || length_at_most(v, v_sq, inside))) {
       out.status = Status::Intersecting;
       break;
     }
@@ -595,15 +593,18 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>
     ++out.iterations;
     const S vw = v.dot(w);
     // A separating plane with room for the radii decides: the lower bound v.w / |v| exceeds
-    // `inside`, squared so the common one-iteration exit needs no square root.
-    if (vw > S(0) && vw * vw > inside_sq * v_sq) {
+    // `inside`, squared so the common one-iteration exit needs no square root (by |v| where the
+    // squares leave the range of doubles: shapes of 1e-145 were called apart when
+    // inside^2 |v|^2 underflowed to 0).
+    if (exceeds_times_length(vw, inside, v, v_sq)) {
       out.status = Status::Separated;
       break;
     }
     if (v_in_set) {
       // Converged with |v| > inside: separated (the same test as run_gjk_distance()).
       const S gap = v_sq - vw;
-      if (gap <= S(0) || gap * gap <= touch * touch * v_sq) {
+      // NaN (overflow) decides nothing here: the simplex's closest point reports it below.
+      if (gap <= S(0) || (gap > S(0) && !exceeds_times_length(gap, touch, v, v_sq))) {
         out.status = Status::Separated;
         break;
       }
