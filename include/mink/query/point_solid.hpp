@@ -178,10 +178,11 @@ struct SolidCore<CylinderT<S>> : std::true_type, GapOfClamp<SolidCore<CylinderT<
 
 /// A polytope of 4 to 63 points, through its face planes (face_planes.hpp; none before the
 /// polytope has built them). Inside: out through the face plane nearest to p. Outside: the
-/// nearest point of the faces whose planes p is above, in a face or on an edge. Nothing (GJK
-/// answers) for coordinates beyond 2^488 (2^40 in float), whose squares would overflow, and for a
-/// point outside whose nearest point is on an edge or a corner less than 1e-3 of the coordinates'
-/// size away: the gap's rounding would tilt the normal. Ties: p inside, as deep below two faces.
+/// nearest corner when p lies in its normal cone, else (up to kNearestMaxFaces faces) the nearest
+/// point of the faces whose planes p is above, in a face or on an edge. Nothing (GJK answers) for
+/// coordinates beyond 2^488 (2^40 in float), whose squares would overflow, and for a point
+/// outside whose nearest point is on an edge or a corner less than 1e-3 of the coordinates' size
+/// away: the gap's rounding would tilt the normal. Ties: p inside, as deep below two faces.
 template <class S>
 struct SolidCore<PolytopeT<S>> : std::true_type {
   using Core = FacePlanesT<S>;
