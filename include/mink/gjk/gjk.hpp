@@ -315,8 +315,8 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
                                                 bool enclose_first = false) {
   using S = typename A::Scalar;
   GjkOutcome<S> out;
-  // Two buffers: the sub-algorithm writes the reduced simplex into the other one, so that going
-  // back to the previous simplex (no progress) costs nothing.
+  // Two buffers: the simplex, and the trial simplices of the recombination below, which take its
+  // place when they get closer.
   SimplexT<S> buffers[2];
   int current = 0;
   constexpr int kMaxRestarts = 8;
@@ -407,12 +407,11 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
         break;
       }
     }
-    // Append w past the end, reduce into the other buffer; `simplex` itself stays as it was.
+    // Store w past the end and find the closest point with it; `simplex` changes only once the
+    // step makes progress (then in place, which moves only the vertices whose place changes).
     simplex.vertices[simplex.size] = vertex;
-    ++simplex.size;
-    SimplexT<S>& reduced = buffers[current ^ 1];
-    const Vec3T<S> next = reduce_to_closest(simplex, reduced);
-    --simplex.size;
+    const KeptVertices<S> kept = closest_vertices(simplex, simplex.size + 1);
+    const Vec3T<S> next = kept.v;
     const S next_sq = next.squaredNorm();
     if (!(next_sq <= std::numeric_limits<S>::max())) {
       // NaN or infinity: finite input whose products overflow (coordinates near 1e154 in
@@ -474,7 +473,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
       v = best_v;
       continue;
     }
-    current ^= 1;
+    keep_vertices(simplex, kept, simplex);
     v = next;
     v_in_set = true;
   }

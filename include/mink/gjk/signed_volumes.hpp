@@ -76,37 +76,58 @@ template <class S>
   return nn > kFlatness<S> * pq_sq * rp_sq && nn > S(0);
 }
 
+/// Offers vertex i as the closest point: `best` takes it when it is strictly closer (as every
+/// offer_* below, so that among equal candidates the first offered stays). Returns whether the
+/// candidate has a finite distance. The candidates are written into `best` in place and only when
+/// they win: built apart and copied in, they were a third of the sub-algorithm's instructions.
+template <class S>
+[[gnu::always_inline]] inline bool offer_vertex(const Vec3T<S>* w, int i, SubSimplex<S>& best) {
+  const S dist_sq = w[i].squaredNorm();
+  if (dist_sq < best.dist_sq) {
+    best.v = w[i];
+    for (int m = 0; m < 4; ++m) best.weights[m] = S(0);
+    best.weights[i] = S(1);
+    best.mask = 1u << i;
+    best.dist_sq = dist_sq;
+  }
+  return dist_sq < std::numeric_limits<S>::infinity();
+}
+
+/// Offers the point of segment (w[i], w[j]) closest to the origin.
+template <class S>
+[[gnu::always_inline]] inline bool offer_segment(const Vec3T<S>* w, int i, int j,
+                                                 SubSimplex<S>& best) {
+  const Vec3T<S> t = w[j] - w[i];
+  const S tt = t.squaredNorm();
+  const S proj = -w[i].dot(t);  // (0 - w_i).t: where the origin projects, times tt
+  if (!(tt > S(0)) || proj <= S(0)) return offer_vertex(w, i, best);
+  if (proj >= tt) return offer_vertex(w, j, best);
+  const S s = proj / tt;
+  const Vec3T<S> v = w[i] + s * t;
+  const S dist_sq = v.squaredNorm();
+  if (dist_sq < best.dist_sq) {
+    best.v = v;
+    for (int m = 0; m < 4; ++m) best.weights[m] = S(0);
+    best.weights[i] = S(1) - s;
+    best.weights[j] = s;
+    best.mask = (1u << i) | (1u << j);
+    best.dist_sq = dist_sq;
+  }
+  return dist_sq < std::numeric_limits<S>::infinity();
+}
+
 template <class S>
 [[gnu::always_inline]] inline SubSimplex<S> closest_on_vertex(const Vec3T<S>* w, int i) {
-  SubSimplex<S> r;
-  r.v = w[i];
-  r.weights[i] = S(1);
-  r.mask = 1u << i;
-  r.dist_sq = w[i].squaredNorm();
-  return r;
+  SubSimplex<S> best;
+  offer_vertex(w, i, best);
+  return best;
 }
 
 template <class S>
 [[gnu::always_inline]] inline SubSimplex<S> closest_on_segment(const Vec3T<S>* w, int i, int j) {
-  const Vec3T<S> t = w[j] - w[i];
-  const S tt = t.squaredNorm();
-  const S proj = -w[i].dot(t);  // (0 - w_i).t: where the origin projects, times tt
-  if (!(tt > S(0)) || proj <= S(0)) return closest_on_vertex(w, i);
-  if (proj >= tt) return closest_on_vertex(w, j);
-  const S s = proj / tt;
-  SubSimplex<S> r;
-  r.v = w[i] + s * t;
-  r.weights[i] = S(1) - s;
-  r.weights[j] = s;
-  r.mask = (1u << i) | (1u << j);
-  r.dist_sq = r.v.squaredNorm();
-  return r;
-}
-
-template <class S>
-[[gnu::always_inline]] inline void keep_closer(SubSimplex<S>& best,
-                                               const SubSimplex<S>& candidate) {
-  if (candidate.dist_sq < best.dist_sq) best = candidate;
+  SubSimplex<S> best;
+  offer_segment(w, i, j, best);
+  return best;
 }
 
 template <class S>
@@ -114,19 +135,26 @@ bool same_sign_or_zero(S x, S reference) {
   return reference > S(0) ? x >= S(0) : x <= S(0);
 }
 
+/// What offer_triangle() found: whether its candidates had a finite distance, and whether the
+/// origin projects into the triangle (its candidate is then the projection, and in a convex body
+/// whose face this is, with the origin beyond the face, no point is closer).
+struct TriangleOffer {
+  bool finite;
+  bool interior;
+};
+
+/// Offers the point of triangle (w[i], w[j], w[k]) closest to the origin.
 template <class S>
-[[gnu::always_inline]] inline SubSimplex<S> closest_on_triangle(const Vec3T<S>* w, int i, int j,
-                                                                int k) {
+[[gnu::always_inline]] inline TriangleOffer offer_triangle(const Vec3T<S>* w, int i, int j, int k,
+                                                           SubSimplex<S>& best) {
   Vec3T<S> n;
   S nn;
   int apex;
-  const bool flat = !triangle_cross(w[i], w[j], w[k], n, nn, &apex);
-  SubSimplex<S> best;
-  if (flat) {
-    keep_closer(best, closest_on_segment(w, i, j));
-    keep_closer(best, closest_on_segment(w, j, k));
-    keep_closer(best, closest_on_segment(w, k, i));
-    return best;
+  if (!triangle_cross(w[i], w[j], w[k], n, nn, &apex)) {
+    bool finite = offer_segment(w, i, j, best);
+    finite |= offer_segment(w, j, k, best);
+    finite |= offer_segment(w, k, i, best);
+    return {finite, false};
   }
   // Projection of the origin onto the plane: exact up to rounding of the plane's offset.
   const S offset = w[i].dot(n);
@@ -136,7 +164,8 @@ template <class S>
   int axis = 0;
   if (std::abs(n.y()) > std::abs(n[axis])) axis = 1;
   if (std::abs(n.z()) > std::abs(n[axis])) axis = 2;
-  const int x = (axis + 1) % 3, y = (axis + 2) % 3;
+  static constexpr int kNext[3] = {1, 2, 0}, kAfter[3] = {2, 0, 1};
+  const int x = kNext[axis], y = kAfter[axis];
   // Barycentric areas from the apex (a, b, c in cyclic order, a at the largest angle): the
   // sub-area of b (b replaced by p) and of c each from an edge at the apex, the two shorter
   // edges; a's as the rest of the whole area n[axis], which triangle_cross() took from those same
@@ -144,62 +173,74 @@ template <class S>
   // carried an error of eps |w| times that edge: on a triangle 7e16 long and 4e5 wide (a needle
   // box against a segment) the weights were off by 2e-5, and the witness point on the segment by
   // 1e11. From the apex, only the split between the two near vertices is that uncertain.
-  const int a = apex == 0 ? i : (apex == 1 ? j : k);
-  const int b = apex == 0 ? j : (apex == 1 ? k : i);
-  const int c = apex == 0 ? k : (apex == 1 ? i : j);
+  const int order[3] = {i, j, k};
+  const int a = order[apex], b = order[kNext[apex]], c = order[kAfter[apex]];
+  const S px = p[x], py = p[y];
+  const S ax = w[a][x], ay = w[a][y], bx = w[b][x], by = w[b][y], cx = w[c][x], cy = w[c][y];
   // (u - p) x (v - u) in the coordinate plane: the area of (p, u, v).
-  auto area_from = [x, y, &p](const Vec3T<S>& u, const Vec3T<S>& v) {
-    return (u[x] - p[x]) * (v[y] - u[y]) - (u[y] - p[y]) * (v[x] - u[x]);
-  };
   const S whole = n[axis];
-  const S area_b = area_from(w[c], w[a]);
-  const S area_c = area_from(w[a], w[b]);
+  const S area_b = (cx - px) * (ay - cy) - (cy - py) * (ax - cx);
+  const S area_c = (ax - px) * (by - ay) - (ay - py) * (bx - ax);
   const S area_a = whole - area_b - area_c;
-  const S ci = apex == 0 ? area_a : (apex == 1 ? area_c : area_b);
-  const S cj = apex == 0 ? area_b : (apex == 1 ? area_a : area_c);
-  const S ck = apex == 0 ? area_c : (apex == 1 ? area_b : area_a);
-  const S ref = whole;
-  const bool in_i = same_sign_or_zero(ci, ref);
-  const bool in_j = same_sign_or_zero(cj, ref);
-  const bool in_k = same_sign_or_zero(ck, ref);
-  if (in_i && in_j && in_k) {
-    const S sum = ci + cj + ck;
-    if (sum != S(0)) {
-      best.weights[i] = ci / sum;
-      best.weights[j] = cj / sum;
-      best.weights[k] = ck / sum;
-      // Two candidates for the closest point: the projection p onto the plane, whose direction is
-      // the plane's normal (the best normal when the shapes nearly touch and the point is tiny),
-      // and the convex combination q, which is a point of A - B by construction. On a sliver
-      // triangle the plane can be off by far more than rounding, and p may then lie nearer the
-      // origin than any point of A - B; GJK needs |v| to stay an upper bound on the distance or
-      // it stops early, too small. So take p where q lies in p's plane to rounding. Not where
-      // |q| = |p| to rounding: on a long thin triangle (a box 2e5 long against a segment) the
-      // weights' rounding slides q along the plane by 1e-5, which tilts q by 4e-5 rad while
-      // changing |q| at second order only; searching along that q found a vertex already in the
-      // simplex, and GJK stopped 0.17 short of the closest face.
-      const Vec3T<S> q = best.weights[i] * w[i] + best.weights[j] * w[j] + best.weights[k] * w[k];
-      const S scale = std::max(
-          {w[i].cwiseAbs().maxCoeff(), w[j].cwiseAbs().maxCoeff(), w[k].cwiseAbs().maxCoeff()});
-      // |(q - p).n| <= 32 eps scale |n|, squared: no square root on this hot path.
-      const S off_plane = q.dot(n) - offset;
-      const S bound = S(32) * std::numeric_limits<S>::epsilon() * scale;
-      const bool p_agrees = off_plane * off_plane <= bound * bound * nn;
-      best.v = p_agrees ? p : q;
+  // Back in the order i, j, k, in which the sums below run whatever the apex.
+  S area[3];
+  area[apex] = area_a;
+  area[kNext[apex]] = area_b;
+  area[kAfter[apex]] = area_c;
+  const bool in_i = same_sign_or_zero(area[0], whole);
+  const bool in_j = same_sign_or_zero(area[1], whole);
+  const bool in_k = same_sign_or_zero(area[2], whole);
+  const S sum = area[0] + area[1] + area[2];
+  if (in_i && in_j && in_k && sum != S(0)) {
+    const S weight_i = area[0] / sum, weight_j = area[1] / sum, weight_k = area[2] / sum;
+    // Two candidates for the closest point: the projection p onto the plane, whose direction is
+    // the plane's normal (the best normal when the shapes nearly touch and the point is tiny),
+    // and the convex combination q, which is a point of A - B by construction. On a sliver
+    // triangle the plane can be off by far more than rounding, and p may then lie nearer the
+    // origin than any point of A - B; GJK needs |v| to stay an upper bound on the distance or
+    // it stops early, too small. So take p where q lies in p's plane to rounding. Not where
+    // |q| = |p| to rounding: on a long thin triangle (a box 2e5 long against a segment) the
+    // weights' rounding slides q along the plane by 1e-5, which tilts q by 4e-5 rad while
+    // changing |q| at second order only; searching along that q found a vertex already in the
+    // simplex, and GJK stopped 0.17 short of the closest face.
+    const Vec3T<S> q = weight_i * w[i] + weight_j * w[j] + weight_k * w[k];
+    const S scale = std::max(
+        {w[i].cwiseAbs().maxCoeff(), w[j].cwiseAbs().maxCoeff(), w[k].cwiseAbs().maxCoeff()});
+    // |(q - p).n| <= 32 eps scale |n|, squared: no square root on this hot path.
+    const S off_plane = q.dot(n) - offset;
+    const S bound = S(32) * std::numeric_limits<S>::epsilon() * scale;
+    const bool p_agrees = off_plane * off_plane <= bound * bound * nn;
+    const Vec3T<S> v = p_agrees ? p : q;
+    const S dist_sq = v.squaredNorm();
+    if (dist_sq < best.dist_sq) {
+      best.v = v;
+      best.weights[0] = best.weights[1] = best.weights[2] = best.weights[3] = S(0);
+      best.weights[i] = weight_i;
+      best.weights[j] = weight_j;
+      best.weights[k] = weight_k;
       best.mask = (1u << i) | (1u << j) | (1u << k);
-      best.dist_sq = best.v.squaredNorm();
-      return best;
+      best.dist_sq = dist_sq;
     }
+    return {dist_sq < std::numeric_limits<S>::infinity(), true};
   }
   // Outside: the closest point lies on an edge whose line has the origin's projection beyond it.
-  if (!in_i) keep_closer(best, closest_on_segment(w, j, k));
-  if (!in_j) keep_closer(best, closest_on_segment(w, k, i));
-  if (!in_k) keep_closer(best, closest_on_segment(w, i, j));
-  if (best.mask == 0) {
-    keep_closer(best, closest_on_segment(w, i, j));
-    keep_closer(best, closest_on_segment(w, j, k));
-    keep_closer(best, closest_on_segment(w, k, i));
+  bool finite = false;
+  if (!in_i) finite |= offer_segment(w, j, k, best);
+  if (!in_j) finite |= offer_segment(w, k, i, best);
+  if (!in_k) finite |= offer_segment(w, i, j, best);
+  if (!finite) {
+    finite |= offer_segment(w, i, j, best);
+    finite |= offer_segment(w, j, k, best);
+    finite |= offer_segment(w, k, i, best);
   }
+  return {finite, false};
+}
+
+template <class S>
+[[gnu::always_inline]] inline SubSimplex<S> closest_on_triangle(const Vec3T<S>* w, int i, int j,
+                                                                int k) {
+  SubSimplex<S> best;
+  offer_triangle(w, i, j, k, best);
   return best;
 }
 
@@ -239,13 +280,19 @@ SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
       best.dist_sq = S(0);
       return best;
     }
+    // The origin lies beyond the faces whose volume has the other sign. A face it projects into
+    // holds the answer: the tetrahedron lies below that face's plane, the origin above it, so no
+    // point of the tetrahedron is nearer than the projection, and the other faces need no look.
     for (int i = 0; i < 4; ++i)
-      if (!same_sign_or_zero(c[i], det))
-        keep_closer(best, closest_on_triangle(w, kFace[i][0], kFace[i][1], kFace[i][2]));
+      if (!same_sign_or_zero(c[i], det) &&
+          offer_triangle(w, kFace[i][0], kFace[i][1], kFace[i][2], best).interior && best.mask != 0)
+        return best;
     if (best.mask != 0) return best;
   }
-  for (int i = 0; i < 4; ++i)
-    keep_closer(best, closest_on_triangle_cold(w, kFace[i][0], kFace[i][1], kFace[i][2]));
+  for (int i = 0; i < 4; ++i) {
+    const SubSimplex<S> face = closest_on_triangle_cold(w, kFace[i][0], kFace[i][1], kFace[i][2]);
+    if (face.dist_sq < best.dist_sq) best = face;
+  }
   return best;
 }
 
@@ -323,19 +370,35 @@ Vec3T<S> separation_direction(const SimplexT<S>& simplex, const Vec3T<S>& v) {
   return n;
 }
 
-/// Writes to `out` the smallest sub-simplex of `in` whose hull holds the point of `in` closest to
-/// the origin, with its weights, and returns that point. `in` and `out` may be the same simplex.
+/// The vertices of the first `n` points of `in` that hold the point of their hull closest to the
+/// origin, with their weights, and that point. `n` may be in.size + 1: the point stored past the
+/// end, which the GJK loop appends there until it knows the step makes progress.
 template <class S>
-[[gnu::always_inline]] inline Vec3T<S> reduce_to_closest(const SimplexT<S>& in, SimplexT<S>& out) {
+[[gnu::always_inline]] inline KeptVertices<S> closest_vertices(const SimplexT<S>& in, int n) {
   Vec3T<S> w[4];
-  for (int i = 0; i < 4; ++i) w[i] = i < in.size ? in.vertices[i].w : Vec3T<S>::Zero();
-  const KeptVertices<S> kept = vertices_to_keep(closest_of_simplex(w, in.size), w, in.size);
-  // Indices increase and index[j] >= j, so copying in place is safe.
+  for (int i = 0; i < 4; ++i) w[i] = i < n ? in.vertices[i].w : Vec3T<S>::Zero();
+  return vertices_to_keep(closest_of_simplex(w, n), w, n);
+}
+
+/// Writes the vertices `kept` of `in` with their weights to `out`, which may be `in`: indices
+/// increase and index[j] >= j, so copying in place is safe, and moves only the vertices whose
+/// place changes.
+template <class S>
+[[gnu::always_inline]] inline void keep_vertices(const SimplexT<S>& in, const KeptVertices<S>& kept,
+                                                 SimplexT<S>& out) {
   for (int j = 0; j < kept.count; ++j) {
     if (&out != &in || kept.index[j] != j) out.vertices[j] = in.vertices[kept.index[j]];
     out.weights[j] = kept.weight[j];
   }
   out.size = kept.count;
+}
+
+/// Writes to `out` the smallest sub-simplex of `in` whose hull holds the point of `in` closest to
+/// the origin, with its weights, and returns that point. `in` and `out` may be the same simplex.
+template <class S>
+[[gnu::always_inline]] inline Vec3T<S> reduce_to_closest(const SimplexT<S>& in, SimplexT<S>& out) {
+  const KeptVertices<S> kept = closest_vertices(in, in.size);
+  keep_vertices(in, kept, out);
   return kept.v;
 }
 
