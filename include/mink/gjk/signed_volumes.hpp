@@ -78,8 +78,9 @@ template <class S>
 
 /// Offers vertex i as the closest point: `best` takes it when it is strictly closer (as every
 /// offer_* below, so that among equal candidates the first offered stays). Returns whether the
-/// candidate has a finite distance. The candidates are written into `best` in place and only when
-/// they win: built apart and copied in, they were a third of the sub-algorithm's instructions.
+/// candidate has a finite distance. A candidate is written into `best` in place and only when it
+/// wins: each used to be built as a struct of its own and the winners copied, 390 instructions
+/// of a polytope pair's distance query with the in-place reduction in gjk.hpp (6.8 %).
 template <class S>
 [[gnu::always_inline]] inline bool offer_vertex(const Vec3T<S>* w, int i, SubSimplex<S>& best) {
   const S dist_sq = w[i].squaredNorm();
@@ -136,8 +137,8 @@ bool same_sign_or_zero(S x, S reference) {
 }
 
 /// What offer_triangle() found: whether its candidates had a finite distance, and whether the
-/// origin projects into the triangle (its candidate is then the projection, and in a convex body
-/// whose face this is, with the origin beyond the face, no point is closer).
+/// origin projects into the triangle (its candidate is then that projection, to rounding; in a
+/// convex body whose face this is, with the origin beyond the face, no point is closer).
 struct TriangleOffer {
   bool finite;
   bool interior;
