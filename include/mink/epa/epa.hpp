@@ -133,9 +133,6 @@ struct EpaOutcome {
   bool degenerate = false;  ///< A - B is flat, a segment or a point: the normal was chosen
 };
 
-/// The corner after corner k of a face, (k + 1) % 3 without the division.
-inline constexpr int kNextCorner[3] = {1, 2, 0};
-
 /// Tries per expansion before EPA gives up on keeping P convex and stops with its bracket.
 inline constexpr int kMaxExpansionAttempts = 8;
 
@@ -351,7 +348,7 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
     for (std::size_t h_i = 0; valid && h_i < ws.horizon.size(); ++h_i) {
       const auto [g, k] = ws.horizon[h_i];
       const int from = ws.faces[g].v[kNextCorner[k]], to = ws.faces[g].v[k];
-      const int far = ws.faces[g].v[kNextCorner[kNextCorner[k]]];
+      const int far = ws.faces[g].v[kCornerAfterNext[k]];
       const int c = make_epa_face(ws, from, to, wi);
       if (c < 0) {
         // w lies on the line of the horizon edge, so in the plane of g: a flat face of A - B

@@ -76,6 +76,21 @@ template <class S>
   return nn > kFlatness<S> * pq_sq * rp_sq && nn > S(0);
 }
 
+/// The corner after corner k of a triangle, and the one after that: (k + 1) % 3 and (k + 2) % 3
+/// without the division (here and in EPA's horizon).
+inline constexpr int kNextCorner[3] = {1, 2, 0}, kCornerAfterNext[3] = {2, 0, 1};
+
+/// `best` becomes the candidate v with squared distance `dist_sq` on the vertices in `mask`, every
+/// weight 0 until the caller sets those of `mask`.
+template <class S>
+[[gnu::always_inline]] inline void take_candidate(SubSimplex<S>& best, const Vec3T<S>& v, S dist_sq,
+                                                  unsigned mask) {
+  best.v = v;
+  best.weights[0] = best.weights[1] = best.weights[2] = best.weights[3] = S(0);
+  best.mask = mask;
+  best.dist_sq = dist_sq;
+}
+
 /// Offers vertex i as the closest point: `best` takes it when it is strictly closer (as every
 /// offer_* below, so that among equal candidates the first offered stays). Returns whether the
 /// candidate has a finite distance. A candidate is written into `best` in place and only when it
@@ -85,11 +100,8 @@ template <class S>
 [[gnu::always_inline]] inline bool offer_vertex(const Vec3T<S>* w, int i, SubSimplex<S>& best) {
   const S dist_sq = w[i].squaredNorm();
   if (dist_sq < best.dist_sq) {
-    best.v = w[i];
-    for (int m = 0; m < 4; ++m) best.weights[m] = S(0);
+    take_candidate(best, w[i], dist_sq, 1u << i);
     best.weights[i] = S(1);
-    best.mask = 1u << i;
-    best.dist_sq = dist_sq;
   }
   return dist_sq < std::numeric_limits<S>::infinity();
 }
@@ -107,12 +119,9 @@ template <class S>
   const Vec3T<S> v = w[i] + s * t;
   const S dist_sq = v.squaredNorm();
   if (dist_sq < best.dist_sq) {
-    best.v = v;
-    for (int m = 0; m < 4; ++m) best.weights[m] = S(0);
+    take_candidate(best, v, dist_sq, (1u << i) | (1u << j));
     best.weights[i] = S(1) - s;
     best.weights[j] = s;
-    best.mask = (1u << i) | (1u << j);
-    best.dist_sq = dist_sq;
   }
   return dist_sq < std::numeric_limits<S>::infinity();
 }
@@ -165,8 +174,7 @@ template <class S>
   int axis = 0;
   if (std::abs(n.y()) > std::abs(n[axis])) axis = 1;
   if (std::abs(n.z()) > std::abs(n[axis])) axis = 2;
-  static constexpr int kNext[3] = {1, 2, 0}, kAfter[3] = {2, 0, 1};
-  const int x = kNext[axis], y = kAfter[axis];
+  const int x = kNextCorner[axis], y = kCornerAfterNext[axis];
   // Barycentric areas from the apex (a, b, c in cyclic order, a at the largest angle): the
   // sub-area of b (b replaced by p) and of c each from an edge at the apex, the two shorter
   // edges; a's as the rest of the whole area n[axis], which triangle_cross() took from those same
@@ -175,7 +183,7 @@ template <class S>
   // box against a segment) the weights were off by 2e-5, and the witness point on the segment by
   // 1e11. From the apex, only the split between the two near vertices is that uncertain.
   const int order[3] = {i, j, k};
-  const int a = order[apex], b = order[kNext[apex]], c = order[kAfter[apex]];
+  const int a = order[apex], b = order[kNextCorner[apex]], c = order[kCornerAfterNext[apex]];
   const S px = p[x], py = p[y];
   const S ax = w[a][x], ay = w[a][y], bx = w[b][x], by = w[b][y], cx = w[c][x], cy = w[c][y];
   // (u - p) x (v - u) in the coordinate plane: the area of (p, u, v).
@@ -186,8 +194,8 @@ template <class S>
   // Back in the order i, j, k, in which the sums below run whatever the apex.
   S area[3];
   area[apex] = area_a;
-  area[kNext[apex]] = area_b;
-  area[kAfter[apex]] = area_c;
+  area[kNextCorner[apex]] = area_b;
+  area[kCornerAfterNext[apex]] = area_c;
   const bool in_i = same_sign_or_zero(area[0], whole);
   const bool in_j = same_sign_or_zero(area[1], whole);
   const bool in_k = same_sign_or_zero(area[2], whole);
@@ -214,13 +222,10 @@ template <class S>
     const Vec3T<S> v = p_agrees ? p : q;
     const S dist_sq = v.squaredNorm();
     if (dist_sq < best.dist_sq) {
-      best.v = v;
-      best.weights[0] = best.weights[1] = best.weights[2] = best.weights[3] = S(0);
+      take_candidate(best, v, dist_sq, (1u << i) | (1u << j) | (1u << k));
       best.weights[i] = weight_i;
       best.weights[j] = weight_j;
       best.weights[k] = weight_k;
-      best.mask = (1u << i) | (1u << j) | (1u << k);
-      best.dist_sq = dist_sq;
     }
     return {dist_sq < std::numeric_limits<S>::infinity(), true};
   }
