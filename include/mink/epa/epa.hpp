@@ -70,13 +70,16 @@ template <class S>
 struct EpaWorkspace {
   std::vector<SimplexVertexT<S>> vertices;
   std::vector<EpaFace<S>> faces;
-  std::vector<int> removed;  ///< faces removed by the current expansion
-  std::vector<int> stack;
   struct Horizon {
     int face, edge;
   };
+  // The scratch of one expansion. make_room() sizes it for the worst case, and the expansion
+  // writes it through raw pointers with counts of its own: with push_back() and the vectors'
+  // own indexing, every store into a face made the compiler reload the vectors' pointers, and
+  // the bookkeeping cost more than the arithmetic of the faces.
+  std::vector<int> removed;  ///< faces removed by the current expansion
+  std::vector<int> stack;
   std::vector<Horizon> horizon;
-  std::vector<int> created;
   std::vector<int> forced;  ///< faces taken into the visible region to keep P convex
   /// Vertex -> the new face of the current expansion that starts there, or -1 (all -1 between
   /// expansions).
@@ -94,6 +97,18 @@ struct EpaWorkspace {
     vertices.clear();
     faces.clear();
     queue.clear();
+  }
+
+  /// Sizes the scratch for an expansion of the current P: its region holds at most every face,
+  /// its horizon at most three edges of each, and every vertex may start a new face.
+  void make_room() {
+    const std::size_t face_count = faces.size();
+    if (removed.size() < face_count) {
+      removed.resize(2 * face_count);
+      stack.resize(2 * face_count);
+    }
+    if (horizon.size() < 3 * face_count) horizon.resize(6 * face_count);
+    if (starting_at.size() < vertices.size()) starting_at.resize(2 * vertices.size(), -1);
   }
 
   void enqueue(int face) {
@@ -146,18 +161,19 @@ bool triangle_normal(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Ve
   return true;
 }
 
-/// Appends face (i, j, k) to the workspace and returns its index, or -1 (and appends nothing) if
-/// it is degenerate. Built in place: a face assembled on the stack and copied in costs a
-/// store-forwarding stall per field, which was a sixth of EPA's time.
+/// Builds face (i, j, k) of `vertices` in `face`, or returns false if it is degenerate. Its
+/// neighbours are the caller's to link. Built in place: a face assembled on the stack and copied
+/// in costs a store-forwarding stall per field, which was a sixth of EPA's time.
 template <class S>
-[[gnu::always_inline]] inline int make_epa_face(EpaWorkspace<S>& ws, int i, int j, int k) {
-  const Vec3T<S>& p = ws.vertices[i].w;
-  const Vec3T<S>& q = ws.vertices[j].w;
-  const Vec3T<S>& r = ws.vertices[k].w;
+[[gnu::always_inline]] inline bool make_epa_face(EpaFace<S>& face,
+                                                 const SimplexVertexT<S>* vertices, int i, int j,
+                                                 int k) {
+  const Vec3T<S>& p = vertices[i].w;
+  const Vec3T<S>& q = vertices[j].w;
+  const Vec3T<S>& r = vertices[k].w;
   Vec3T<S> n;
   S nn;
-  if (!triangle_cross(p, q, r, n, nn)) return -1;
-  EpaFace<S>& face = ws.faces.emplace_back();
+  if (!triangle_cross(p, q, r, n, nn)) return false;
   face.n = n;
   face.nn = nn;
   face.v[0] = i;
@@ -167,8 +183,7 @@ template <class S>
   face.offset = n.dot(p + q + r) / S(3);
   face.key = face.offset * std::abs(face.offset) / nn;
   face.live = true;
-  for (int e = 0; e < 3; ++e) face.adj[e] = face.adj_edge[e] = -1;
-  return static_cast<int>(ws.faces.size()) - 1;
+  return true;
 }
 
 /// The seed tetrahedron over vertices 0..3 as a mesh: its faces, counter-clockwise seen from
@@ -279,16 +294,21 @@ bool seed_polytope(EpaWorkspace<S>& ws) {
                         .cross(ws.vertices[3].w.template cast<Wide>() - wide0)) > Wide(0);
   }
   const TetrahedronMesh& mesh = kTetrahedron[flip ? 1 : 0];
-  int ids[4];
+  const int first = static_cast<int>(ws.faces.size());
+  ws.faces.resize(first + 4);
   for (int f = 0; f < 4; ++f)
-    if ((ids[f] = make_epa_face(ws, mesh.v[f][0], mesh.v[f][1], mesh.v[f][2])) < 0) return false;
+    if (!make_epa_face(ws.faces[first + f], ws.vertices.data(), mesh.v[f][0], mesh.v[f][1],
+                       mesh.v[f][2])) {
+      ws.faces.resize(first);
+      return false;
+    }
   for (int f = 0; f < 4; ++f) {
-    EpaFace<S>& face = ws.faces[ids[f]];
+    EpaFace<S>& face = ws.faces[first + f];
     for (int e = 0; e < 3; ++e) {
-      face.adj[e] = ids[mesh.adj[f][e]];
+      face.adj[e] = first + mesh.adj[f][e];
       face.adj_edge[e] = mesh.adj_edge[f][e];
     }
-    ws.enqueue(ids[f]);
+    ws.enqueue(first + f);
   }
   return true;
 }
@@ -306,6 +326,14 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
   const int wi = static_cast<int>(ws.vertices.size());
   ws.vertices.push_back(w);
   ws.forced.clear();
+  ws.make_room();
+  // The new faces take the slots from `first_new` on, in horizon order.
+  const int first_new = static_cast<int>(ws.faces.size());
+  const SimplexVertexT<S>* const vertices = ws.vertices.data();
+  int* const removed = ws.removed.data();
+  int* const stack = ws.stack.data();
+  typename EpaWorkspace<S>::Horizon* const horizon = ws.horizon.data();
+  int* const starting_at = ws.starting_at.data();
   // `face` is the nearest: when the origin is below it, it is inside P (every face's signed
   // distance is at least this one's), unless rounding has already bent P. Not so when the cores
   // only touch or are just apart and EPA decides (contact.hpp): the origin may then lie outside P,
@@ -317,40 +345,41 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
       nearest_offset > S(0) &&
       nearest_offset * nearest_offset > held_depth * held_depth * ws.faces[face].nn;
   bool valid = false;
+  int created_count = 0;
   for (int attempt = 0; attempt < kMaxExpansionAttempts; ++attempt) {
-    ws.removed.clear();
-    ws.horizon.clear();
-    ws.stack.clear();
-    ws.faces[face].live = false;
-    ws.removed.push_back(face);
-    ws.stack.push_back(face);
-    while (!ws.stack.empty()) {
-      const int f = ws.stack.back();
-      ws.stack.pop_back();
+    EpaFace<S>* faces = ws.faces.data();
+    int removed_count = 0, stack_count = 0, horizon_count = 0;
+    faces[face].live = false;
+    removed[removed_count++] = face;
+    stack[stack_count++] = face;
+    while (stack_count > 0) {
+      const int f = stack[--stack_count];
       for (int e = 0; e < 3; ++e) {
-        const int g = ws.faces[f].adj[e];
-        if (!ws.faces[g].live) continue;
+        const int g = faces[f].adj[e];
+        if (!faces[g].live) continue;
         const bool forced = !ws.forced.empty() &&
                             std::find(ws.forced.begin(), ws.forced.end(), g) != ws.forced.end();
-        if (forced || ws.faces[g].n.dot(w.w) - ws.faces[g].offset > S(0)) {
-          ws.faces[g].live = false;
-          ws.removed.push_back(g);
-          ws.stack.push_back(g);
+        if (forced || faces[g].n.dot(w.w) - faces[g].offset > S(0)) {
+          faces[g].live = false;
+          removed[removed_count++] = g;
+          stack[stack_count++] = g;
         } else {
-          ws.horizon.push_back({g, ws.faces[f].adj_edge[e]});
+          horizon[horizon_count++] = {g, faces[f].adj_edge[e]};
         }
       }
     }
     // New faces over the horizon, checked before anything is linked.
-    valid = ws.horizon.size() >= 3;
+    valid = horizon_count >= 3;
     int reflex = -1;
-    ws.created.clear();
-    for (std::size_t h_i = 0; valid && h_i < ws.horizon.size(); ++h_i) {
-      const auto [g, k] = ws.horizon[h_i];
-      const int from = ws.faces[g].v[kNextCorner[k]], to = ws.faces[g].v[k];
-      const int far = ws.faces[g].v[kCornerAfterNext[k]];
-      const int c = make_epa_face(ws, from, to, wi);
-      if (c < 0) {
+    ws.faces.resize(first_new + horizon_count);
+    faces = ws.faces.data();
+    created_count = 0;
+    for (int h_i = 0; valid && h_i < horizon_count; ++h_i) {
+      const auto [g, k] = horizon[h_i];
+      const int from = faces[g].v[kNextCorner[k]], to = faces[g].v[k];
+      const int far = faces[g].v[kCornerAfterNext[k]];
+      EpaFace<S>& created = faces[first_new + created_count];
+      if (!make_epa_face(created, vertices, from, to, wi)) {
         // w lies on the line of the horizon edge, so in the plane of g: a flat face of A - B
         // sampled at an interior point (the centre of a cylinder's cap) and then at two rim
         // points on either side of it. Taking g into the region retriangulates that plane.
@@ -358,15 +387,14 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
         reflex = g;
         break;
       }
-      ws.created.push_back(c);
-      EpaFace<S>& created = ws.faces[c];
+      ++created_count;
       created.adj[0] = g;
       created.adj_edge[0] = k;
       // Convexity across the horizon edge: the neighbour's far vertex is below the new face.
       // When it lies in the new face's plane (w is in g's plane: a flat facet of A - B sampled
       // at several points), the two faces must also face the same way: opposite normals mean
       // the new face folds back over g, and P would turn inside out there.
-      const S above = created.n.dot(ws.vertices[far].w) - created.offset;
+      const S above = created.n.dot(vertices[far].w) - created.offset;
       const bool off_plane = above * above > flat_tol * flat_tol * created.nn;
       // And the origin below the new face, when P holds it: P only grows, so a face with the
       // origin beyond it by more than rounding says that P has stopped being convex (w nearly in
@@ -379,13 +407,13 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
         if (!holds_origin || !(created.offset < S(0)) ||
             !(created.offset * created.offset > flat_tol * flat_tol * created.nn))
           return false;
-        const Vec3T<S>& w0 = ws.vertices[created.v[0]].w;
+        const Vec3T<S>& w0 = vertices[created.v[0]].w;
         const S plane_error = S(64) * std::numeric_limits<S>::epsilon() * size;
-        return created.offset * created.offset >
-               plane_error * plane_error * (ws.vertices[created.v[1]].w - w0).squaredNorm() *
-                   (ws.vertices[created.v[2]].w - w0).squaredNorm();
+        return created.offset * created.offset > plane_error * plane_error *
+                                                     (vertices[created.v[1]].w - w0).squaredNorm() *
+                                                     (vertices[created.v[2]].w - w0).squaredNorm();
       };
-      if ((off_plane ? above > S(0) : created.n.dot(ws.faces[g].n) < S(0)) || beyond_rounding()) {
+      if ((off_plane ? above > S(0) : created.n.dot(faces[g].n) < S(0)) || beyond_rounding()) {
         valid = false;
         reflex = g;
         break;
@@ -394,30 +422,29 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
     // The horizon must be one simple loop: each new face's edge 1 (to -> w) meets exactly one
     // other new face's edge 2 (w -> from), i.e. every horizon vertex starts exactly one new
     // face. Found through a table from vertex to the new face that starts there: comparing
-    // all pairs cost about fifty mispredicted branches per query.
-    if (ws.starting_at.size() < ws.vertices.size()) ws.starting_at.resize(ws.vertices.size(), -1);
-    for (std::size_t c_i = 0; valid && c_i < ws.created.size(); ++c_i) {
-      int& slot = ws.starting_at[ws.faces[ws.created[c_i]].v[0]];
+    // all pairs cost about fifty mispredicted branches per query. A simple loop links every new
+    // face on both sides, so make_epa_face() need not mark the links unset.
+    for (int c = first_new; valid && c < first_new + created_count; ++c) {
+      int& slot = starting_at[faces[c].v[0]];
       if (slot >= 0) valid = false;  // two new faces start at one vertex: not a simple loop
-      slot = ws.created[c_i];
+      slot = c;
     }
-    for (std::size_t c_i = 0; valid && c_i < ws.created.size(); ++c_i) {
-      const int c = ws.created[c_i];
-      const int match = ws.starting_at[ws.faces[c].v[1]];
+    for (int c = first_new; valid && c < first_new + created_count; ++c) {
+      const int match = starting_at[faces[c].v[1]];
       if (match < 0) {
         valid = false;
         break;
       }
-      ws.faces[c].adj[1] = match;
-      ws.faces[c].adj_edge[1] = 2;
-      ws.faces[match].adj[2] = c;
-      ws.faces[match].adj_edge[2] = 1;
+      faces[c].adj[1] = match;
+      faces[c].adj_edge[1] = 2;
+      faces[match].adj[2] = c;
+      faces[match].adj_edge[2] = 1;
     }
-    for (const int c : ws.created) ws.starting_at[ws.faces[c].v[0]] = -1;
+    for (int c = first_new; c < first_new + created_count; ++c) starting_at[faces[c].v[0]] = -1;
     if (valid) break;
     // Undo this attempt: drop the new faces, revive the removed ones.
-    ws.faces.resize(ws.faces.size() - ws.created.size());
-    for (const int f : ws.removed) ws.faces[f].live = true;
+    ws.faces.resize(first_new);
+    for (int r = 0; r < removed_count; ++r) faces[removed[r]].live = true;
     if (reflex < 0) break;
     ws.forced.push_back(reflex);
   }
@@ -425,9 +452,10 @@ bool expand_polytope(EpaWorkspace<S>& ws, int face, const SimplexVertexT<S>& w, 
     ws.vertices.pop_back();
     return false;
   }
-  for (const int c : ws.created) {
-    const EpaFace<S>& created = ws.faces[c];
-    EpaFace<S>& neighbour = ws.faces[created.adj[0]];
+  EpaFace<S>* const faces = ws.faces.data();
+  for (int c = first_new; c < first_new + created_count; ++c) {
+    const EpaFace<S>& created = faces[c];
+    EpaFace<S>& neighbour = faces[created.adj[0]];
     neighbour.adj[created.adj_edge[0]] = c;
     neighbour.adj_edge[created.adj_edge[0]] = 0;
     ws.enqueue(c);
