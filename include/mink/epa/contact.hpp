@@ -197,7 +197,13 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // Touching or apart: GJK below.
   }
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
-  const auto gjk = detail::run_gjk_distance(diff, radius_a + radius_b, size, tolerances, cache);
+  // Overlapping cores with no radius: the boolean test's first phase encloses the origin in a
+  // tetrahedron for less than the distance loop, and EPA starts from it; boxes come here only
+  // touching or apart, where it would prove nothing.
+  constexpr bool kBoxes = detail::BoxCore<A>::value && detail::BoxCore<B>::value;
+  const auto gjk =
+      detail::run_gjk_distance(diff, radius_a + radius_b, size, tolerances, cache,
+                               kBoxes ? detail::EnclosePhase::Off : detail::EnclosePhase::Simplex);
   result.iterations = gjk.iterations;
   if (gjk.status == Status::InvalidInput) {
     result.error = detail::kOverflowError;

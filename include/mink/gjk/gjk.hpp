@@ -121,6 +121,16 @@ template <class S>
   return {det, std::abs(det) > S(8) * kEps * permanent && permanent >= kSmallest};
 }
 
+/// A point of the first phase's simplex (enclose_origin()): the point w of A - B and the direction
+/// that found it, and with `kWitnesses` the support points on A and B that made it.
+template <class S>
+struct PointAndDirection {
+  Vec3T<S> w;
+  Vec3T<S> dir;
+};
+template <class S, bool kWitnesses>
+using EnclosePointT = std::conditional_t<kWitnesses, SimplexVertexT<S>, PointAndDirection<S>>;
+
 /// The first phase of the boolean test on cores with no radius: GJK that steers by the simplex
 /// feature facing the origin (its plane's or line's normal, from cross products) instead of the
 /// point closest to the origin (Casey Muratori's formulation, as in the seed article). On
@@ -134,102 +144,112 @@ template <class S>
 /// A - B. Anything else (a volume too small to sign, the origin near a face, a degenerate
 /// simplex, `max_supports` spent) is Unsure, and the distance-based loop decides. Steering needs
 /// no such care: a wrong turn costs a support call, not a wrong answer. `iterations` counts the
-/// support calls; `directions[0..count)` are those of the final simplex, for the warm-start cache.
+/// support calls; when it decides, `directions[0..count)` are those of the final simplex (or the
+/// separating direction), for the warm-start cache.
 ///
 /// `first` (optional): the support point along diff.translation, already computed (and counted in
-/// `iterations`) by the caller, which is the first one this phase asks for.
-template <ConvexShape A, ConvexShape B>
+/// `iterations`) by the caller, which is the first one this phase asks for. With `kWitnesses`
+/// (contact(), whose EPA starts from the tetrahedron) the points carry their support points on A
+/// and B, and `simplex` receives the final simplex: when the answer is Intersecting, the
+/// enclosing tetrahedron with the origin's barycentric weights; when it is Separated, the simplex
+/// and last the support point whose plane separates (no weights).
+template <bool kWitnesses = false, ConvexShape A, ConvexShape B>
 EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scalar inside,
                               int max_supports, int& iterations,
                               Vec3T<typename A::Scalar> (&directions)[4], int& count,
-                              const Vec3T<typename A::Scalar>* first = nullptr) {
+                              const EnclosePointT<typename A::Scalar, kWitnesses>* first = nullptr,
+                              SimplexT<typename A::Scalar>* simplex = nullptr) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
+  using P = EnclosePointT<S, kWitnesses>;
   // The simplex, oldest first; the support point of this iteration, w, is not stored until the
-  // step below decides what to keep. Points are moved one by one (no index lists): this loop is
-  // the whole boolean test on small hulls, and its bookkeeping once cost as much as the supports.
-  V p[3];
+  // step below decides what to keep. Points are moved whole (no index lists): this loop is the
+  // whole boolean test on small hulls, and its bookkeeping once cost as much as the supports.
+  P p[3];
   V d = diff.translation;  // towards the origin from A - B's centre, B's origin seen from A
   if (!(d.squaredNorm() > S(0))) d = V::UnitX();
   count = 0;
 
   while (iterations < max_supports) {
-    V w;
+    P next;
     if (first) {
-      w = *first;
+      next = *first;
       first = nullptr;
     } else {
-      w = diff.support_point(d);
+      if constexpr (kWitnesses)
+        diff.support(d, next);
+      else
+        next.w = diff.support_point(d);
+      next.dir = d;
       ++iterations;
     }
+    const V& w = next.w;
     const S wd = w.dot(d);
     if (!(wd >= S(0))) {
       // The support plane normal to d passes short of the origin: separated by -wd / |d|. It
       // decides only with room for the radii and the touching tolerance (NaN: not decided).
       if (exceeds_times_length(-wd, inside, d, S(d.squaredNorm()))) {
+        if constexpr (kWitnesses) {
+          if (simplex) {
+            const int kept = count;
+            for (int k = 0; k < kept; ++k) simplex->vertices[k] = p[k];
+            simplex->vertices[kept] = next;
+            simplex->size = kept + 1;
+          }
+        }
         directions[0] = d;  // the separating direction: the best warm start
         count = 1;
         return EncloseVerdict::Separated;
       }
       return EncloseVerdict::Unsure;
     }
-    const V wdir = d;
     // Segment (p[k], w), w newest: the origin lies beside the segment (keep both, steer
     // perpendicular to it) or beyond w's end (keep w alone).
     auto segment_with = [&](int k) {
-      const V ab = p[k] - w;
+      const V ab = p[k].w - w;
       if (ab.dot(-w) > S(0)) {
-        p[0] = p[k];
-        directions[0] = directions[k];
-        p[1] = w;
-        directions[1] = wdir;
-        count = 2;
         d = ab.cross(-w).cross(ab);
+        p[0] = p[k];
+        p[1] = next;
+        count = 2;
       } else {
-        p[0] = w;
-        directions[0] = wdir;
-        count = 1;
         d = -w;
+        p[0] = next;
+        count = 1;
       }
     };
     // Triangle (p[i], p[j], w), w newest: an edge's side or the face's side facing the origin.
     auto triangle_with = [&](int i, int j) {
       const V ao = -w;
-      const V ab = p[j] - w, ac = p[i] - w;
+      const V ab = p[j].w - w, ac = p[i].w - w;
       const V abc = ab.cross(ac);
       if (abc.cross(ac).dot(ao) > S(0)) {
         if (ac.dot(ao) > S(0)) {
           // Edge (p[i], w).
-          const V pi = p[i], di = directions[i];
-          p[0] = pi;
-          directions[0] = di;
-          p[1] = w;
-          directions[1] = wdir;
-          count = 2;
           d = ac.cross(ao).cross(ac);
+          const P pi = p[i];
+          p[0] = pi;
+          p[1] = next;
+          count = 2;
         } else {
           segment_with(j);
         }
       } else if (ab.cross(abc).dot(ao) > S(0)) {
         segment_with(j);
       } else {
-        const V pi = p[i], di = directions[i], pj = p[j], dj = directions[j];
-        p[0] = pi;
-        directions[0] = di;
-        p[1] = pj;
-        directions[1] = dj;
-        p[2] = w;
-        directions[2] = wdir;
-        count = 3;
         d = abc.dot(ao) > S(0) ? abc : V(-abc);
+        const P pi = p[i], pj = p[j];
+        p[0] = pi;
+        p[1] = pj;
+        p[2] = next;
+        count = 3;
       }
     };
     switch (count) {
       case 0:
-        p[0] = w;
-        directions[0] = wdir;
-        count = 1;
         d = -w;
+        p[0] = next;
+        count = 1;
         break;
       case 1:
         segment_with(0);
@@ -244,8 +264,8 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
         // sought, so volume[3] gives the orientation; a face whose volume has the other sign
         // has the origin beyond it, and its opposite vertex goes.
         const OriginVolume<S> faces[4] = {
-            origin_volume(p[1], p[2], w), origin_volume(p[0], p[2], w),
-            origin_volume(p[0], p[1], w), origin_volume(p[0], p[1], p[2])};
+            origin_volume(p[1].w, p[2].w, w), origin_volume(p[0].w, p[2].w, w),
+            origin_volume(p[0].w, p[1].w, w), origin_volume(p[0].w, p[1].w, p[2].w)};
         const S volume[4] = {-faces[0].value, faces[1].value, -faces[2].value, faces[3].value};
         const S orientation = volume[3];
         if (volume[0] * orientation < S(0)) {
@@ -267,8 +287,18 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
             (volume[0] > S(0) && volume[1] > S(0) && volume[2] > S(0) && volume[3] > S(0)) ||
             (volume[0] < S(0) && volume[1] < S(0) && volume[2] < S(0) && volume[3] < S(0));
         if (certain && one_sign) {
-          directions[3] = wdir;
+          for (int k = 0; k < 3; ++k) directions[k] = p[k].dir;
+          directions[3] = next.dir;
           count = 4;
+          if constexpr (kWitnesses) {
+            if (simplex) {
+              const S total = volume[0] + volume[1] + volume[2] + volume[3];
+              for (int k = 0; k < 3; ++k) simplex->vertices[k] = p[k];
+              simplex->vertices[3] = next;
+              for (int k = 0; k < 4; ++k) simplex->weights[k] = volume[k] / total;
+              simplex->size = 4;
+            }
+          }
           return EncloseVerdict::Intersecting;
         }
         return EncloseVerdict::Unsure;
@@ -282,37 +312,46 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
 /// Support calls the first phase of the boolean test may spend before the loop takes over.
 inline constexpr int kEnclosePhaseSupports = 24;
 
-/// enclose_origin() for distance(), out of line, so that the distance loop's code stays as small
-/// as it was. True when the origin is proved enclosed. `first`: the support point along
-/// diff.translation, already computed.
-template <ConvexShape A, ConvexShape B>
-[[gnu::noinline]] bool enclose_first_phase(const CoreDifference<A, B>& diff,
-                                           typename A::Scalar inside, int max_supports,
-                                           int& iterations,
-                                           Vec3T<typename A::Scalar> (&directions)[4], int& count,
-                                           const Vec3T<typename A::Scalar>& first) {
-  return enclose_origin(diff, inside, max_supports, iterations, directions, count, &first) ==
-         EncloseVerdict::Intersecting;
+/// enclose_origin() for distance() and contact(), out of line, so that the distance loop's code
+/// stays as small as it was; with `kWitnesses` (contact()), `simplex` receives the final simplex
+/// (see enclose_origin()). `first`: the support point along diff.translation, already computed.
+template <bool kWitnesses, ConvexShape A, ConvexShape B>
+[[gnu::noinline]] EncloseVerdict enclose_first_phase(
+    const CoreDifference<A, B>& diff, typename A::Scalar inside, int max_supports, int& iterations,
+    Vec3T<typename A::Scalar> (&directions)[4], int& count,
+    const SimplexVertexT<typename A::Scalar>& first, SimplexT<typename A::Scalar>& simplex) {
+  if constexpr (kWitnesses) {
+    return enclose_origin<true>(diff, inside, max_supports, iterations, directions, count, &first,
+                                &simplex);
+  } else {
+    const PointAndDirection<typename A::Scalar> start{first.w, first.dir};
+    return enclose_origin<false>(diff, inside, max_supports, iterations, directions, count, &start);
+  }
 }
+
+/// Whether run_gjk_distance() tries the boolean test's first phase, and what it keeps (see there).
+enum class EnclosePhase { Off, Verdict, Simplex };
 
 /// Runs GJK between the cores of a and b until the distance converges; `radius` is the sum of the
 /// shapes' radii and `size` the sum of their bounding radii. Status is Separated or Intersecting
 /// for the *full* shapes (cores within `radius`, touching within tolerance counts),
 /// IterationLimit, or InvalidInput when the arithmetic overflowed (kOverflowError).
 ///
-/// `enclose_first` (distance() sets it): for cores with no radius and no warm start whose first
-/// support point (along the line of centres) does not already prove them apart, the boolean
+/// `enclose` (distance() and contact() set it): for cores with no radius and no warm start whose
+/// first support point (along the line of centres) does not already prove them apart, the boolean
 /// test's first phase runs on from that point (enclose_first_phase()). It proves most
-/// overlapping pairs enclosed at a fraction of this loop's cost; the outcome then has an empty
-/// simplex, which distance() does not need (it reports no points for them) and contact() does
-/// (EPA starts from the simplex with its witness points), hence the flag. When it proves nothing,
-/// the loop goes on from the same first point.
+/// overlapping pairs enclosed at a fraction of this loop's cost. With EnclosePhase::Verdict
+/// (distance(), which reports no points for such pairs) the outcome's simplex is then empty, and
+/// when the phase proves nothing the loop goes on from the same first point. EnclosePhase::Simplex
+/// (contact()) has the phase carry witness points, at some cost: the outcome's simplex is then the
+/// enclosing tetrahedron with the origin's weights, which EPA starts from, and when the phase
+/// finds a separating plane the loop goes on from the support point that showed it.
 template <ConvexShape A, ConvexShape B>
 GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff,
                                                 typename A::Scalar radius, typename A::Scalar size,
                                                 const TolerancesT<typename A::Scalar>& tol,
                                                 GjkCacheT<typename A::Scalar>* cache,
-                                                bool enclose_first = false) {
+                                                EnclosePhase enclose = EnclosePhase::Off) {
   using S = typename A::Scalar;
   GjkOutcome<S> out;
   // Two buffers: the simplex, and the trial simplices of the recombination below, which take its
@@ -331,8 +370,8 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
   bool v_in_set = false;  // v is a point of A - B (so |v| bounds the distance from above)
   // The boolean first phase is tried once, from the first support point (see above).
   const bool warm = cache_is_usable(cache);
-  bool try_enclose =
-      enclose_first && radius == S(0) && !warm && diff.translation.squaredNorm() > S(0);
+  bool try_enclose = enclose != EnclosePhase::Off && radius == S(0) && !warm &&
+                     diff.translation.squaredNorm() > S(0);
   if (warm) {
     // Rebuild the previous simplex from its directions: fresh support points of the current poses.
     for (int i = 0; i < cache->size; ++i) {
@@ -373,15 +412,45 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
       try_enclose = false;
       Vec3T<S> directions[4];
       int count = 0;
-      if (!(vw > touch * v_length) &&
-          enclose_first_phase(diff, touch, std::min(kEnclosePhaseSupports, tol.max_iterations),
-                              out.iterations, directions, count, vertex.w)) {
+      const int supports = std::min(kEnclosePhaseSupports, tol.max_iterations);
+      // No phase when the first point already proves the cores apart.
+      EncloseVerdict verdict = EncloseVerdict::Unsure;
+      if (!(vw > touch * v_length))
+        verdict = enclose == EnclosePhase::Simplex
+                      ? enclose_first_phase<true>(diff, touch, supports, out.iterations, directions,
+                                                  count, vertex, out.simplex)
+                      : enclose_first_phase<false>(diff, touch, supports, out.iterations,
+                                                   directions, count, vertex, out.simplex);
+      if (verdict == EncloseVerdict::Intersecting) {
         out.status = Status::Intersecting;
         out.upper = S(0);
         save_cache(
             cache, count, [&directions](int i) { return directions[i]; },
             Vec3T<S>(Vec3T<S>::Zero()));
         return out;
+      }
+      if (verdict == EncloseVerdict::Separated && enclose == EnclosePhase::Simplex) {
+        // The phase found a separating plane. Its support point bounds the distance from below,
+        // and the loop goes on from the phase's simplex with that point in it, which is nearer
+        // the answer than the line of centres' point alone.
+        const SimplexVertexT<S>& last = out.simplex.vertices[out.simplex.size - 1];
+        const Vec3T<S> last_v = -last.dir;  // the v whose support point that is
+        const S last_length = std::sqrt(last_v.squaredNorm());
+        if (last_v.dot(last.w) / last_length > out.lower) {
+          out.lower = last_v.dot(last.w) / last_length;
+          out.lower_v = last_v;
+        }
+        SimplexT<S>& start = buffers[current];
+        start.size = 0;
+        for (int i = 0; i < out.simplex.size; ++i) {
+          bool duplicate = false;
+          for (int k = 0; k < start.size; ++k)
+            duplicate |= start.vertices[k].w == out.simplex.vertices[i].w;
+          if (!duplicate) start.vertices[start.size++] = out.simplex.vertices[i];
+        }
+        v = reduce_to_closest_cold(start, start);
+        v_in_set = true;
+        continue;
       }
     }
     if (vw / v_length > out.lower) {
