@@ -49,6 +49,8 @@ def load(paths):
             query, family, subset, method = name.split("/")[:4]
             key = (query, family + "/" + subset, method)
             entry = runs.setdefault(key, {"times": [], "counters": {}, "median": None})
+            # Registration order: with random interleaving the file lists runs in random order.
+            entry["order"] = min(entry.get("order", math.inf), b.get("family_index", math.inf))
             if b.get("error_occurred"):
                 entry["error"] = b.get("error_message", "error")
                 continue
@@ -61,6 +63,7 @@ def load(paths):
             for c in COUNTERS:
                 if c in b:
                     entry["counters"][c] = b[c]
+    runs = dict(sorted(runs.items(), key=lambda item: item[1]["order"]))
     for entry in runs.values():
         if entry["median"] is None and entry["times"]:
             t = sorted(entry["times"])
