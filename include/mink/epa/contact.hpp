@@ -201,9 +201,9 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   // tetrahedron for less than the distance loop, and EPA starts from it; boxes come here only
   // touching or apart, where it would prove nothing.
   constexpr bool kBoxes = detail::BoxCore<A>::value && detail::BoxCore<B>::value;
+  constexpr auto kPhase = kBoxes ? detail::EnclosePhase::Off : detail::EnclosePhase::Simplex;
   const auto gjk =
-      detail::run_gjk_distance(diff, radius_a + radius_b, size, tolerances, cache,
-                               kBoxes ? detail::EnclosePhase::Off : detail::EnclosePhase::Simplex);
+      detail::run_gjk_distance<kPhase>(diff, radius_a + radius_b, size, tolerances, cache);
   result.iterations = gjk.iterations;
   if (gjk.status == Status::InvalidInput) {
     result.error = detail::kOverflowError;

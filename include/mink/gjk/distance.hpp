@@ -173,9 +173,9 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   // Overlapping cores with no radius: the boolean test's first phase proves most of them enclosed
   // for less than the distance loop (run_gjk_distance()); boxes have had the test above.
+  constexpr auto kPhase = kBoxes ? detail::EnclosePhase::Off : detail::EnclosePhase::Verdict;
   const auto gjk =
-      detail::run_gjk_distance(diff, radius_a + radius_b, size, tolerances, cache,
-                               kBoxes ? detail::EnclosePhase::Off : detail::EnclosePhase::Verdict);
+      detail::run_gjk_distance<kPhase>(diff, radius_a + radius_b, size, tolerances, cache);
   result.status = gjk.status;
   result.iterations = gjk.iterations;
   if (gjk.status == Status::InvalidInput) {

@@ -337,7 +337,7 @@ enum class EnclosePhase { Off, Verdict, Simplex };
 /// for the *full* shapes (cores within `radius`, touching within tolerance counts),
 /// IterationLimit, or InvalidInput when the arithmetic overflowed (kOverflowError).
 ///
-/// `enclose` (distance() and contact() set it): for cores with no radius and no warm start whose
+/// `kEnclose` (distance() and contact() set it): for cores with no radius and no warm start whose
 /// first support point (along the line of centres) does not already prove them apart, the boolean
 /// test's first phase runs on from that point (enclose_first_phase()). It proves most
 /// overlapping pairs enclosed at a fraction of this loop's cost. With EnclosePhase::Verdict
@@ -346,12 +346,14 @@ enum class EnclosePhase { Off, Verdict, Simplex };
 /// (contact()) has the phase carry witness points, at some cost: the outcome's simplex is then the
 /// enclosing tetrahedron with the origin's weights, which EPA starts from, and when the phase
 /// finds a separating plane the loop goes on from the support point that showed it.
-template <ConvexShape A, ConvexShape B>
+///
+/// A template parameter, so that each caller compiles only the phase it uses (the run-time Shape
+/// instantiates every query for every pair of shape types).
+template <EnclosePhase kEnclose = EnclosePhase::Off, ConvexShape A, ConvexShape B>
 GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff,
                                                 typename A::Scalar radius, typename A::Scalar size,
                                                 const TolerancesT<typename A::Scalar>& tol,
-                                                GjkCacheT<typename A::Scalar>* cache,
-                                                EnclosePhase enclose = EnclosePhase::Off) {
+                                                GjkCacheT<typename A::Scalar>* cache) {
   using S = typename A::Scalar;
   GjkOutcome<S> out;
   // Two buffers: the simplex, and the trial simplices of the recombination below, which take its
@@ -370,7 +372,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
   bool v_in_set = false;  // v is a point of A - B (so |v| bounds the distance from above)
   // The boolean first phase is tried once, from the first support point (see above).
   const bool warm = cache_is_usable(cache);
-  bool try_enclose = enclose != EnclosePhase::Off && radius == S(0) && !warm &&
+  bool try_enclose = kEnclose != EnclosePhase::Off && radius == S(0) && !warm &&
                      diff.translation.squaredNorm() > S(0);
   if (warm) {
     // Rebuild the previous simplex from its directions: fresh support points of the current poses.
@@ -408,49 +410,48 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
     ++out.iterations;
     const S vw = v.dot(vertex.w);
     const S v_length = std::sqrt(v_sq);
-    if (try_enclose) {
-      try_enclose = false;
-      Vec3T<S> directions[4];
-      int count = 0;
-      const int supports = std::min(kEnclosePhaseSupports, tol.max_iterations);
-      // No phase when the first point already proves the cores apart.
-      EncloseVerdict verdict = EncloseVerdict::Unsure;
-      if (!(vw > touch * v_length))
-        verdict = enclose == EnclosePhase::Simplex
-                      ? enclose_first_phase<true>(diff, touch, supports, out.iterations, directions,
-                                                  count, vertex, out.simplex)
-                      : enclose_first_phase<false>(diff, touch, supports, out.iterations,
-                                                   directions, count, vertex, out.simplex);
-      if (verdict == EncloseVerdict::Intersecting) {
-        out.status = Status::Intersecting;
-        out.upper = S(0);
-        save_cache(
-            cache, count, [&directions](int i) { return directions[i]; },
-            Vec3T<S>(Vec3T<S>::Zero()));
-        return out;
-      }
-      if (verdict == EncloseVerdict::Separated && enclose == EnclosePhase::Simplex) {
-        // The phase found a separating plane. Its support point bounds the distance from below,
-        // and the loop goes on from the phase's simplex with that point in it, which is nearer
-        // the answer than the line of centres' point alone.
-        const SimplexVertexT<S>& last = out.simplex.vertices[out.simplex.size - 1];
-        const Vec3T<S> last_v = -last.dir;  // the v whose support point that is
-        const S last_length = std::sqrt(last_v.squaredNorm());
-        if (last_v.dot(last.w) / last_length > out.lower) {
-          out.lower = last_v.dot(last.w) / last_length;
-          out.lower_v = last_v;
+    if constexpr (kEnclose != EnclosePhase::Off) {
+      if (try_enclose) {
+        try_enclose = false;
+        Vec3T<S> directions[4];
+        int count = 0;
+        const int supports = std::min(kEnclosePhaseSupports, tol.max_iterations);
+        // No phase when the first point already proves the cores apart.
+        EncloseVerdict verdict = EncloseVerdict::Unsure;
+        if (!(vw > touch * v_length))
+          verdict = enclose_first_phase<kEnclose == EnclosePhase::Simplex>(
+              diff, touch, supports, out.iterations, directions, count, vertex, out.simplex);
+        if (verdict == EncloseVerdict::Intersecting) {
+          out.status = Status::Intersecting;
+          out.upper = S(0);
+          save_cache(
+              cache, count, [&directions](int i) { return directions[i]; },
+              Vec3T<S>(Vec3T<S>::Zero()));
+          return out;
         }
-        SimplexT<S>& start = buffers[current];
-        start.size = 0;
-        for (int i = 0; i < out.simplex.size; ++i) {
-          bool duplicate = false;
-          for (int k = 0; k < start.size; ++k)
-            duplicate |= start.vertices[k].w == out.simplex.vertices[i].w;
-          if (!duplicate) start.vertices[start.size++] = out.simplex.vertices[i];
+        if (kEnclose == EnclosePhase::Simplex && verdict == EncloseVerdict::Separated) {
+          // The phase found a separating plane. Its support point bounds the distance from below,
+          // and the loop goes on from the phase's simplex with that point in it, which is nearer
+          // the answer than the line of centres' point alone.
+          const SimplexVertexT<S>& last = out.simplex.vertices[out.simplex.size - 1];
+          const Vec3T<S> last_v = -last.dir;  // the v whose support point that is
+          const S last_length = std::sqrt(last_v.squaredNorm());
+          if (last_v.dot(last.w) / last_length > out.lower) {
+            out.lower = last_v.dot(last.w) / last_length;
+            out.lower_v = last_v;
+          }
+          SimplexT<S>& start = buffers[current];
+          start.size = 0;
+          for (int i = 0; i < out.simplex.size; ++i) {
+            bool duplicate = false;
+            for (int k = 0; k < start.size; ++k)
+              duplicate |= start.vertices[k].w == out.simplex.vertices[i].w;
+            if (!duplicate) start.vertices[start.size++] = out.simplex.vertices[i];
+          }
+          v = reduce_to_closest_cold(start, start);
+          v_in_set = true;
+          continue;
         }
-        v = reduce_to_closest_cold(start, start);
-        v_in_set = true;
-        continue;
       }
     }
     if (vw / v_length > out.lower) {
