@@ -342,10 +342,11 @@ enum class EnclosePhase { Off, Verdict, Simplex };
 /// test's first phase runs on from that point (enclose_first_phase()). It proves most
 /// overlapping pairs enclosed at a fraction of this loop's cost. With EnclosePhase::Verdict
 /// (distance(), which reports no points for such pairs) the outcome's simplex is then empty, and
-/// when the phase proves nothing the loop goes on from the same first point. EnclosePhase::Simplex
-/// (contact()) has the phase carry witness points, at some cost: the outcome's simplex is then the
-/// enclosing tetrahedron with the origin's weights, which EPA starts from, and when the phase
-/// finds a separating plane the loop goes on from the support point that showed it.
+/// otherwise the loop goes on from the same first point. EnclosePhase::Simplex (contact()) has the
+/// phase carry witness points, at some cost: the outcome's simplex is then the enclosing
+/// tetrahedron with the origin's weights, which EPA starts from; when the phase finds a separating
+/// plane, the loop goes on from the phase's simplex with the support point that showed it; when it
+/// proves nothing, from the same first point.
 ///
 /// A template parameter, so that each caller compiles only the phase it uses (the run-time Shape
 /// instantiates every query for every pair of shape types).
