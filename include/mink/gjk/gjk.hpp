@@ -176,11 +176,12 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
       next = *first;
       first = nullptr;
     } else {
-      if constexpr (kWitnesses)
-        diff.support(d, next);
-      else
+      if constexpr (kWitnesses) {
+        diff.support(d, next);  // sets next.dir
+      } else {
         next.w = diff.support_point(d);
-      next.dir = d;
+        next.dir = d;
+      }
       ++iterations;
     }
     const V& w = next.w;
@@ -381,10 +382,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
       SimplexVertexT<S> vertex;
       diff.support(cache->directions[i], vertex);
       ++out.iterations;
-      bool duplicate = false;
-      SimplexT<S>& simplex = buffers[current];
-      for (int k = 0; k < simplex.size; ++k) duplicate |= simplex.vertices[k].w == vertex.w;
-      if (!duplicate) simplex.vertices[simplex.size++] = vertex;
+      buffers[current].append_unless_held(vertex);
     }
     v = reduce_to_closest_cold(buffers[current], buffers[current]);
     v_in_set = true;
@@ -436,19 +434,15 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
           // the answer than the line of centres' point alone.
           const SimplexVertexT<S>& last = out.simplex.vertices[out.simplex.size - 1];
           const Vec3T<S> last_v = -last.dir;  // the v whose support point that is
-          const S last_length = std::sqrt(last_v.squaredNorm());
-          if (last_v.dot(last.w) / last_length > out.lower) {
-            out.lower = last_v.dot(last.w) / last_length;
+          const S last_lower = last_v.dot(last.w) / std::sqrt(last_v.squaredNorm());
+          if (last_lower > out.lower) {
+            out.lower = last_lower;
             out.lower_v = last_v;
           }
           SimplexT<S>& start = buffers[current];
           start.size = 0;
-          for (int i = 0; i < out.simplex.size; ++i) {
-            bool duplicate = false;
-            for (int k = 0; k < start.size; ++k)
-              duplicate |= start.vertices[k].w == out.simplex.vertices[i].w;
-            if (!duplicate) start.vertices[start.size++] = out.simplex.vertices[i];
-          }
+          for (int i = 0; i < out.simplex.size; ++i)
+            start.append_unless_held(out.simplex.vertices[i]);
           v = reduce_to_closest_cold(start, start);
           v_in_set = true;
           continue;
@@ -471,9 +465,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
         out.status = Status::Separated;
         break;
       }
-      bool duplicate = false;
-      for (int k = 0; k < simplex.size; ++k) duplicate |= simplex.vertices[k].w == vertex.w;
-      if (duplicate) {
+      if (simplex.holds_point(vertex.w)) {
         out.status = Status::Separated;
         break;
       }
@@ -511,9 +503,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
           else
             mixed.b = vertex.b;
           mixed.w = mixed.a - mixed.b;
-          bool repeated = false;
-          for (int m = 0; m < trial.size; ++m) repeated |= trial.vertices[m].w == mixed.w;
-          if (!repeated && trial.size < 4) trial.vertices[trial.size++] = mixed;
+          if (trial.size < 4) trial.append_unless_held(mixed);
         }
         const Vec3T<S> candidate = reduce_to_closest_cold(trial, trial);
         const S candidate_sq = candidate.squaredNorm();

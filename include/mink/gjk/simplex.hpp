@@ -21,6 +21,18 @@ struct SimplexT {
   S weights[4] = {};  ///< barycentric weights of the closest point, > 0 and summing to 1
   int size = 0;       ///< 0..4
 
+  /// Whether a vertex has the point `w` of A - B: a support point met again.
+  bool holds_point(const Vec3T<S>& w) const {
+    bool held = false;  // no early exit: the loop is short and its branch unpredictable
+    for (int k = 0; k < size; ++k) held |= vertices[k].w == w;
+    return held;
+  }
+
+  /// Appends `vertex` unless its point of A - B is already held. The caller keeps size < 4.
+  void append_unless_held(const SimplexVertexT<S>& vertex) {
+    if (!holds_point(vertex.w)) vertices[size++] = vertex;
+  }
+
   /// The closest point's witnesses on A and B: the weighted sums of the vertices' support
   /// points. Weights are renormalised (equal weights if they are all 0) so that a simplex whose
   /// weights were never set still gives a point of each shape.
