@@ -12,10 +12,11 @@ ContactResult contact(const Shape& a, const Pose& pose_a, const Shape& b, const 
     r.error = a.error() ? a.error() : b.error();
     return r;
   }
-  return dispatch(a, b, [&](const auto& ca, const auto& cb) {
-    return contact<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, pose_a, cb, pose_b,
-                                                                           tolerances, cache);
-  });
+  return dispatch(a, pose_a, b, pose_b,
+                  [&](const auto& ca, const Pose& pa, const auto& cb, const Pose& pb) {
+                    return contact<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(
+                        ca, pa, cb, pb, tolerances, cache);
+                  });
 }
 
 }  // namespace mink

@@ -4,6 +4,9 @@
 // over every pair of core types compile in parallel.
 #pragma once
 
+#include <cstddef>
+#include <utility>
+
 #include "mink/query/shape_queries.hpp"
 #include "mink/support/rounded.hpp"
 
@@ -49,14 +52,72 @@ auto with_concrete(const Shape& shape, Fn&& fn) {
       shape.cores().front());
 }
 
+/// A concrete core's place in Core (the pointer types stand for their shared ones).
+template <class T>
+struct SharedCoreOf {
+  using type = T;
+};
+template <>
+struct SharedCoreOf<PolytopeRef> {
+  using type = SharedPolytope;
+};
+template <>
+struct SharedCoreOf<HullRef> {
+  using type = SharedHull;
+};
+
+template <class T, class... Ts>
+constexpr std::size_t core_rank(const std::variant<Ts...>*) {
+  constexpr bool same[] = {std::is_same_v<T, Ts>...};
+  std::size_t i = 0;
+  while (i < sizeof...(Ts) && !same[i]) ++i;
+  return i;
+}
+
+/// R is a Rounded<concrete core>.
+template <class R>
+inline constexpr std::size_t kCoreRank =
+    core_rank<typename SharedCoreOf<decltype(R::shape)>::type>(static_cast<const Core*>(nullptr));
+
+/// The answer for B against A, given the answer for A against B.
+inline void swap_sides(IntersectResult&) {}
+
+template <class Result>
+void swap_sides(Result& r) {
+  r.normal = -r.normal;
+  std::swap(r.point_a, r.point_b);
+}
+
+inline void swap_sides(ManifoldResult& r) {
+  r.normal = -r.normal;
+  for (int i = 0; i < r.count; ++i) std::swap(r.points[i].point_a, r.points[i].point_b);
+}
+
+/// Runs query(a, pose_a, b, pose_b) on the concrete cores. A pair whose core types come in the
+/// other order than in Core runs as (b, a) and its answer is swapped back, so that each unordered
+/// pair of core types compiles once: the library's instantiations, most of its build time, fall
+/// from 81 pairs per query to 45. It also makes swapping A and B flip the answer exactly. A
+/// GjkCache therefore holds the directions of the pair in Core's order, whichever order the
+/// caller passes.
 template <class Query>
-auto dispatch(const Shape& a, const Shape& b, Query&& query) {
+auto dispatch(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
+              Query&& query) {
   const bool a_single = a.cores().size() == 1, b_single = b.cores().size() == 1;
   if (a_single && b_single)
     return with_concrete(a, [&](const auto& ca) {
-      return with_concrete(b, [&](const auto& cb) { return query(ca, cb); });
+      return with_concrete(b, [&](const auto& cb) {
+        using CA = std::decay_t<decltype(ca)>;
+        using CB = std::decay_t<decltype(cb)>;
+        if constexpr (kCoreRank<CA> <= kCoreRank<CB>) {
+          return query(ca, pose_a, cb, pose_b);
+        } else {
+          auto result = query(cb, pose_b, ca, pose_a);
+          swap_sides(result);
+          return result;
+        }
+      });
     });
-  return query(a, b);
+  return query(a, pose_a, b, pose_b);
 }
 
 }  // namespace mink::detail

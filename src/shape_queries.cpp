@@ -12,10 +12,11 @@ IntersectResult intersect(const Shape& a, const Pose& pose_a, const Shape& b, co
     r.error = a.error() ? a.error() : b.error();
     return r;
   }
-  return dispatch(a, b, [&](const auto& ca, const auto& cb) {
-    return intersect<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, pose_a, cb, pose_b,
-                                                                             tolerances, cache);
-  });
+  return dispatch(a, pose_a, b, pose_b,
+                  [&](const auto& ca, const Pose& pa, const auto& cb, const Pose& pb) {
+                    return intersect<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(
+                        ca, pa, cb, pb, tolerances, cache);
+                  });
 }
 
 DistanceResult distance(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
@@ -25,10 +26,11 @@ DistanceResult distance(const Shape& a, const Pose& pose_a, const Shape& b, cons
     r.error = a.error() ? a.error() : b.error();
     return r;
   }
-  return dispatch(a, b, [&](const auto& ca, const auto& cb) {
-    return distance<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, pose_a, cb, pose_b,
-                                                                            tolerances, cache);
-  });
+  return dispatch(a, pose_a, b, pose_b,
+                  [&](const auto& ca, const Pose& pa, const auto& cb, const Pose& pb) {
+                    return distance<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(
+                        ca, pa, cb, pb, tolerances, cache);
+                  });
 }
 
 }  // namespace mink

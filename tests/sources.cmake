@@ -6,6 +6,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/analytic_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/brute_force_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/nasty_cases_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/box_boolean_near_touching_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/bad_input_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/float_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/warm_start_test.cpp

@@ -2,6 +2,12 @@
 /// intersect(), distance() and contact() on run-time Shapes: one dispatch on the pair of core
 /// types, then the same template code as the static shapes (see gjk/intersect.hpp, gjk/distance.hpp
 /// and epa/contact.hpp for the conventions, which are identical).
+///
+/// Each pair of different core types runs in one fixed order, the order of `Core`, and the answer
+/// is swapped back (normal negated, points exchanged) when the caller's order is the other one.
+/// So for single-core shapes of different core types, swapping A and B flips every answer exactly,
+/// and a `GjkCache` belongs to the unordered pair. Cores of one type, and sums of several cores,
+/// run in the caller's order; their swapped answers agree within the error bounds.
 #pragma once
 
 #include "mink/epa/contact.hpp"

@@ -18,6 +18,7 @@
 #include "oracle/curved.hpp"
 #include "oracle/curved_to_mink.hpp"
 #include "oracle/penetration.hpp"
+#include "oracle/poses.hpp"
 
 namespace {
 
@@ -30,13 +31,8 @@ using oracle::Real;
 using oracle::V3;
 using oracle::widen;
 
-Pose at(double x, double y, double z) {
-  return Pose::from_translation(Vec3(x, y, z));
-}
-
-Pose rotated(const Vec3& t, double angle, const Vec3& axis) {
-  return Pose::from(t, Quat(Eigen::AngleAxisd(angle, axis.normalized())));
-}
+using oracle::at;
+using oracle::rotated;
 
 std::vector<Vec3> corners(const Vec3& half) {
   std::vector<Vec3> c;

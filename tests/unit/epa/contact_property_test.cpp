@@ -408,9 +408,11 @@ void static_pairs(const char* name, int ka, int kb, std::uint64_t base, int defa
     mink::ContactResult r;
     if (!penetrating_pose(a, da, pa, b, db, rng, pb, r)) continue;
     check_pair(a, da, pa, b, db, pb, r, rng, stats);
-    // The run-time path gives the same answer.
+    // The run-time path gives the same answer, within the two answers' error bounds: it may run
+    // the pair as (B, A) (src/shape_dispatch.hpp), and EPA on a curved core stops within a bracket.
     const auto rt = mink::contact(make_runtime(da), pa, make_runtime(db), pb);
-    EXPECT_NEAR(rt.depth, r.depth, 1e-12 * (size_of(da) + size_of(db)));
+    EXPECT_NEAR(rt.depth, r.depth,
+                rt.error_bound + r.error_bound + 1e-12 * (size_of(da) + size_of(db)));
   }
   EXPECT_GT(stats.pairs, n * 8 / 10);
 }

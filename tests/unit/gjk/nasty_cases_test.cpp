@@ -15,6 +15,7 @@
 #include "oracle/check.hpp"
 #include "oracle/contact_check.hpp"
 #include "oracle/penetration.hpp"
+#include "oracle/poses.hpp"
 #include "oracle/random.hpp"
 
 namespace {
@@ -24,13 +25,8 @@ using mink::Pose;
 using mink::Quat;
 using mink::Vec3;
 
-Pose at(double x, double y, double z) {
-  return Pose::from_translation(Vec3(x, y, z));
-}
-
-Pose rotated(const Vec3& t, double angle, const Vec3& axis) {
-  return Pose::from(t, Quat(Eigen::AngleAxisd(angle, axis.normalized())));
-}
+using oracle::at;
+using oracle::rotated;
 
 template <class A, class B>
 void expect_touching(const A& a, const Pose& pa, const B& b, const Pose& pb, double size) {
@@ -316,54 +312,6 @@ TEST(GjkNasty, CurvedShapesNearTouching) {
   // Two ellipsoids nearly touching at their tips along x: gap 1e-9.
   const mink::Ellipsoid e2{Vec3(2, 0.3, 0.3)};
   expect_separated(e2, Pose::identity(), e2, at(4 + 1e-9, 0, 0), 1e-9, 1e-10 * 4, Vec3::UnitX());
-}
-
-// intersect() answers most box pairs by the separating axis test alone (query/box_box.hpp) and
-// hands the rest to GJK: corner near corner and edge near edge (where the distance exceeds every
-// axis's gap), edges parallel to 1e-9 and exactly, faces flush, each moved to a hair inside, at
-// and outside touching; the flag must match the Minkowski-difference oracle whenever the gap is
-// outside the touching band, and agree with distance() always.
-TEST(GjkNasty, BoxBooleanNearTouching) {
-  const Box a{Vec3(1, 0.5, 0.25)}, b{Vec3(0.3, 0.7, 0.4)};
-  const double size = a.half_extents.norm() + b.half_extents.norm();
-  std::vector<Pose> poses;
-  for (double tilt : {0.0, 1e-9, 1e-7, 1e-6, 3e-6, 1e-5, 1e-4, 0.3})
-    for (const Vec3& axis : {Vec3(1, 1, 1), Vec3(0, 0, 1), Vec3(1, -2, 0.5)})
-      poses.push_back(rotated(Vec3::Zero(), tilt, axis));
-  oracle::Rng rng(4242);
-  for (int i = 0; i < 20; ++i) poses.push_back(Pose::from(Vec3::Zero(), rng.rotation()));
-  const Pose pa = rotated(Vec3(1e3, -2, 5), 0.7, Vec3(0.2, 1, 0.3));
-  int checked = 0;
-  for (const Pose& turn : poses) {
-    for (const Vec3& dir : {Vec3(1, 1, 1), Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(-0.3, 1, 0.2)}) {
-      // B along `dir` from A, first clearly apart, then moved back by the distance plus delta.
-      Pose pb = Pose::from(pa.translation + pa.rotate(dir.normalized() * 3 * size),
-                           Quat(pa.rotation * turn.rotation));
-      const auto apart = mink::distance(a, pa, b, pb);
-      ASSERT_EQ(apart.status, mink::Status::Separated);
-      for (double delta : {-1e-6, -1e-11, 0.0, 1e-11, 1e-8, 1e-6}) {
-        Pose moved = pb;
-        moved.translation -= apart.normal * (apart.distance - delta * size);
-        const oracle::WorldBox wa{oracle::widen(a.half_extents), oracle::widen(pa.rotation),
-                                  oracle::widen(pa.translation)};
-        const oracle::WorldBox wb{oracle::widen(b.half_extents), oracle::widen(moved.rotation),
-                                  oracle::widen(moved.translation)};
-        const auto expected =
-            oracle::polytope_pair(oracle::box_corners(wa), oracle::box_corners(wb));
-        const auto got = mink::intersect(a, pa, b, moved);
-        const auto dist = mink::distance(a, pa, b, moved);
-        ASSERT_NE(got.status, mink::Status::InvalidInput);
-        EXPECT_EQ(got.intersect, dist.status == mink::Status::Intersecting)
-            << "intersect() and distance() disagree at delta " << delta;
-        const double gap = static_cast<double>(expected.gap);
-        if (std::abs(gap) > oracle::kTouchingBand * size) {
-          EXPECT_EQ(got.intersect, gap <= 0) << "gap " << gap << " at delta " << delta;
-          ++checked;
-        }
-      }
-    }
-  }
-  EXPECT_GT(checked, 500);
 }
 
 // Stacked boxes turned by 1e-6..1e-4 about the stacking axis, under a general orientation: their
