@@ -96,9 +96,10 @@ inline void swap_sides(ManifoldResult& r) {
 /// Runs query(a, pose_a, b, pose_b) on the concrete cores. A pair whose core types come in the
 /// other order than in Core runs as (b, a) and its answer is swapped back, so that each unordered
 /// pair of core types compiles once: the library's instantiations, most of its build time, fall
-/// from 81 pairs per query to 45. It also makes swapping A and B flip the answer exactly. A
-/// GjkCache therefore holds the directions of the pair in Core's order, whichever order the
-/// caller passes.
+/// from 81 pairs per query to 45. It also makes swapping A and B flip the answer exactly when the
+/// core types differ (cores of one type, and sums, run in the caller's order). A GjkCache
+/// therefore holds the directions of such a pair in Core's order, whichever order the caller
+/// passes.
 template <class Query>
 auto dispatch(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
               Query&& query) {
