@@ -7,11 +7,6 @@ using detail::dispatch;
 
 ContactResult contact(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
                       const Tolerances& tolerances, GjkCache* cache) {
-  if (a.error() || b.error()) {
-    ContactResult r;
-    r.error = a.error() ? a.error() : b.error();
-    return r;
-  }
   return dispatch(a, pose_a, b, pose_b,
                   [&](const auto& ca, const Pose& pa, const auto& cb, const Pose& pb) {
                     return contact<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(

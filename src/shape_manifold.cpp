@@ -7,11 +7,6 @@ using detail::dispatch;
 
 ManifoldResult manifold(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
                         const ManifoldOptions& options) {
-  if (a.error() || b.error()) {
-    ManifoldResult r;
-    r.error = a.error() ? a.error() : b.error();
-    return r;
-  }
   return dispatch(a, pose_a, b, pose_b,
                   [&](const auto& ca, const Pose& pa, const auto& cb, const Pose& pb) {
                     return manifold<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(
