@@ -136,6 +136,31 @@ TEST(GjkBadInput, ShapeFactoriesRejectBadInput) {
   expect_failure(mink::Shape::rounded(*good, kInf), "rounded(inf)");
 }
 
+// A default-constructed Shape holds no core: every run-time query says so, in either position,
+// and computes nothing.
+TEST(GjkBadInput, EmptyShapeIsAnErrorInEveryQuery) {
+  const mink::Shape empty;
+  const mink::Shape box = mink::Shape::box(Vec3(1, 1, 1)).value();
+  const Pose pose = Pose::identity();
+  for (int order = 0; order < 2; ++order) {
+    const mink::Shape& a = order == 0 ? empty : box;
+    const mink::Shape& b = order == 0 ? box : empty;
+    const auto i = mink::intersect(a, pose, b, pose);
+    const auto d = mink::distance(a, pose, b, pose);
+    const auto c = mink::contact(a, pose, b, pose);
+    const auto m = mink::manifold(a, pose, b, pose);
+    EXPECT_EQ(i.status, mink::Status::InvalidInput);
+    EXPECT_EQ(d.status, mink::Status::InvalidInput);
+    EXPECT_EQ(c.status, mink::Status::InvalidInput);
+    EXPECT_EQ(m.status, mink::Status::InvalidInput);
+    for (const char* error : {i.error, d.error, c.error, m.error}) {
+      ASSERT_NE(error, nullptr);
+      EXPECT_STREQ(error, "shape is empty");
+    }
+    EXPECT_EQ(m.count, 0);
+  }
+}
+
 TEST(GjkBadInput, NonOrthonormalRotationNeverGivesNaN) {
   // The queries leave orthonormality to the caller (pose_error checks it); a scaled or singular
   // rotation must still give a finite answer rather than NaN or a hang.
