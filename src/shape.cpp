@@ -7,14 +7,7 @@ namespace mink {
 namespace {
 
 double core_bounding_radius(const Core& core) {
-  return std::visit(
-      [](const auto& c) -> double {
-        if constexpr (detail::kSharedCore<std::decay_t<decltype(c)>>)
-          return c->bounding_radius();
-        else
-          return c.bounding_radius();
-      },
-      core);
+  return visit_core(core, [](const auto& c) -> double { return c.bounding_radius(); });
 }
 
 const char* core_error(const Core& core) {

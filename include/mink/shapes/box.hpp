@@ -17,6 +17,7 @@ struct BoxT {
             detail::sign_nonneg(d.y()) * half_extents.y(),
             detail::sign_nonneg(d.z()) * half_extents.z()};
   }
+  Vec3T<S> core_centre() const { return Vec3T<S>::Zero(); }
   S core_radius() const { return S(0); }
   /// |half_extents|, also where its square overflows or underflows (half extents beyond 1e154 or
   /// under 1e-154: a plain norm() is inf or 0 there, and every tolerance scaled by it with it).

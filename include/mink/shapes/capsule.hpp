@@ -17,6 +17,7 @@ struct CapsuleT {
   Vec3T<S> support_core(const Vec3T<S>& d) const {
     return {S(0), S(0), detail::sign_nonneg(d.z()) * half_height};
   }
+  Vec3T<S> core_centre() const { return Vec3T<S>::Zero(); }
   S core_radius() const { return radius; }
   S bounding_radius() const { return radius + half_height; }
   const char* error() const {

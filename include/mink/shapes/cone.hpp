@@ -28,6 +28,7 @@ struct ConeT {
     if (!detail::planar_unit(d.x(), d.y(), ux, uy)) return {S(0), S(0), -half_height};
     return {radius * ux, radius * uy, -half_height};
   }
+  Vec3T<S> core_centre() const { return Vec3T<S>::Zero(); }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return std::hypot(radius, half_height); }
   const char* error() const {

@@ -22,6 +22,7 @@ struct CylinderT {
     if (!detail::planar_unit(d.x(), d.y(), ux, uy)) return {S(0), S(0), z};
     return {radius * ux, radius * uy, z};
   }
+  Vec3T<S> core_centre() const { return Vec3T<S>::Zero(); }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return std::hypot(radius, half_height); }
   const char* error() const {

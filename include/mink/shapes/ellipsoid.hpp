@@ -27,6 +27,7 @@ struct EllipsoidT {
     if (dd.isZero(S(0))) return Vec3T<S>::Zero();
     return radii.cwiseProduct(detail::unit_of(dd));
   }
+  Vec3T<S> core_centre() const { return Vec3T<S>::Zero(); }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return radii.maxCoeff(); }
   const char* error() const {

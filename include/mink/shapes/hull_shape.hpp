@@ -143,6 +143,7 @@ class ConvexHullShapeT {
       shape.input_indices_[i] = hull.vertices[i].input_index;
       shape.nodes_[i] = Node{{p.x(), p.y(), p.z()}, offsets[i], offsets[i + 1]};
       shape.bounding_radius_ = std::max(shape.bounding_radius_, p.norm());
+      shape.centre_ += p / S(n);  // divided first: no overflow near the largest doubles
     }
     shape.edges_.resize(hull.neighbors.size());
     for (std::size_t k = 0; k < hull.neighbors.size(); ++k) {
@@ -226,6 +227,8 @@ class ConvexHullShapeT {
   bool climbs() const { return climbs_; }
 
   Vec3T<S> support_core(const Vec3T<S>& d) const { return point(support_index(d)); }
+  /// The mean of the vertices: inside the hull.
+  const Vec3T<S>& core_centre() const { return centre_; }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return bounding_radius_; }
   const char* error() const {
@@ -310,6 +313,7 @@ class ConvexHullShapeT {
     seed_cells_ = o.seed_cells_;
     tolerance_ = o.tolerance_;
     bounding_radius_ = o.bounding_radius_;
+    centre_ = o.centre_;
     hint_.store(o.hint_.load(std::memory_order_relaxed), std::memory_order_relaxed);
   }
 
@@ -460,6 +464,7 @@ class ConvexHullShapeT {
   bool climbs_ = false;
   S tolerance_ = S(0);
   S bounding_radius_ = S(0);
+  Vec3T<S> centre_ = Vec3T<S>::Zero();
   // On its own cache line: the climb writes it, while other threads read the members above.
   // The class is then 64-aligned and a multiple of 64 bytes long, so nothing follows on that line.
   alignas(64) mutable std::atomic<std::uint32_t> hint_{0};

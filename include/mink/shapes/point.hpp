@@ -13,6 +13,7 @@ struct PointT {
   Vec3T<S> position = Vec3T<S>::Zero();
 
   Vec3T<S> support_core(const Vec3T<S>&) const { return position; }
+  Vec3T<S> core_centre() const { return position; }
   S core_radius() const { return S(0); }
   S bounding_radius() const {  // at any magnitude (length_of())
     return detail::length_of(position);

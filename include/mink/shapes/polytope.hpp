@@ -123,6 +123,7 @@ class PolytopeT {
       p.y_[i] = points[i].y();
       p.z_[i] = points[i].z();
       p.bounding_radius_ = std::max(p.bounding_radius_, points[i].norm());
+      p.centre_ += points[i] / S(n);  // divided first: no overflow near the largest doubles
     }
     if (n >= kHullClimbMinVertices && n <= std::numeric_limits<std::uint32_t>::max() / 2)
       p.lazy_hull_ = std::make_shared<detail::LazyBuild<detail::PolytopeHull<S>>>();
@@ -138,6 +139,8 @@ class PolytopeT {
   [[gnu::always_inline]] inline Vec3T<S> support_core(const Vec3T<S>& d) const {
     return point(support_index(d));
   }
+  /// The mean of the points: inside the hull, which its vertices alone may not be.
+  const Vec3T<S>& core_centre() const { return centre_; }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return bounding_radius_; }
   const char* error() const { return x_.empty() ? "polytope has no points" : nullptr; }
@@ -218,6 +221,7 @@ class PolytopeT {
 
   std::vector<S> x_, y_, z_;
   S bounding_radius_ = S(0);
+  Vec3T<S> centre_ = Vec3T<S>::Zero();
   // At most one of the two: the hull from kHullClimbMinVertices points, the planes below.
   std::shared_ptr<detail::LazyBuild<detail::PolytopeHull<S>>> lazy_hull_;
   std::shared_ptr<detail::LazyBuild<FacePlanesT<S>>> lazy_planes_;

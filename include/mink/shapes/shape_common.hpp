@@ -14,7 +14,10 @@
 ///   - `S core_radius() const`: the radius added around the core (unit: length, >= 0);
 ///   - `S bounding_radius() const`: radius of a ball about the local origin containing the whole
 ///     shape, used to scale tolerances;
-///   - `const char* error() const`: why the shape is invalid, or nullptr when it is valid.
+///   - `const char* error() const`: why the shape is invalid, or nullptr when it is valid;
+///   - optionally, `Vec3T<S> core_centre() const`: a point of the core towards its middle. GJK's
+///     first phase starts from the difference of the two shapes' centres, a point of A - B that
+///     costs no support call (gjk.hpp, enclose_origin()); a shape without it starts as before.
 #pragma once
 
 #include <cmath>

@@ -13,6 +13,7 @@ struct SphereT {
   S radius = S(0);  ///< (unit: length), finite and >= 0
 
   Vec3T<S> support_core(const Vec3T<S>&) const { return Vec3T<S>::Zero(); }
+  Vec3T<S> core_centre() const { return Vec3T<S>::Zero(); }
   S core_radius() const { return radius; }
   S bounding_radius() const { return radius; }
   const char* error() const {

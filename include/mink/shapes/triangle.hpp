@@ -22,6 +22,7 @@ struct TriangleT {
     if (da >= db) return da >= dc ? a : c;
     return db >= dc ? b : c;
   }
+  Vec3T<S> core_centre() const { return a / S(3) + b / S(3) + c / S(3); }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return std::max({a.norm(), b.norm(), c.norm()}); }
   const char* error() const {

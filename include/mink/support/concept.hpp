@@ -18,6 +18,12 @@ concept ConvexShape = requires(const T& shape, const Vec3T<typename T::Scalar>& 
   { shape.error() } -> std::convertible_to<const char*>;
 };
 
+/// A shape that names a point of its core towards its middle (shapes/shape_common.hpp).
+template <class T>
+concept HasCoreCentre = ConvexShape<T> && requires(const T& shape) {
+  { shape.core_centre() } -> std::convertible_to<Vec3T<typename T::Scalar>>;
+};
+
 /// The full support mapping of a shape in its own frame: the core's support pushed out by the
 /// radius along the unit direction. d must not be zero when the radius is not.
 template <ConvexShape T>

@@ -18,6 +18,9 @@ struct MinkowskiSum {
   Vec3T<Scalar> support_core(const Vec3T<Scalar>& d) const {
     return a.support_core(d) + b.support_core(d);
   }
+  Vec3T<Scalar> core_centre() const requires HasCoreCentre<A> && HasCoreCentre<B> {
+    return a.core_centre() + b.core_centre();
+  }
   Scalar core_radius() const { return a.core_radius() + b.core_radius(); }
   Scalar bounding_radius() const { return a.bounding_radius() + b.bounding_radius(); }
   const char* error() const {

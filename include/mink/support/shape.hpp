@@ -79,6 +79,7 @@ class Shape {
   const std::vector<Core>& cores() const { return cores_; }
 
   Vec3 support_core(const Vec3& d) const;
+  Vec3 core_centre() const;
   double core_radius() const { return radius_; }
   double bounding_radius() const { return bounding_radius_; }
   const char* error() const { return cores_.empty() ? "shape is empty" : nullptr; }
@@ -90,16 +91,34 @@ class Shape {
   double bounding_radius_ = 0;
 };
 
-/// Support of one primitive core.
-inline Vec3 support_core(const Core& core, const Vec3& d) {
+/// Calls `f` on the primitive behind `core`: the shape itself, or the one a shared pointer holds
+/// (not null: Shape's factories never store a null one).
+template <class F>
+decltype(auto) visit_core(const Core& core, F&& f) {
   return std::visit(
-      [&d](const auto& c) -> Vec3 {
+      [&f](const auto& c) -> decltype(auto) {
         if constexpr (detail::kSharedCore<std::decay_t<decltype(c)>>)
-          return c->support_core(d);
+          return f(*c);
         else
-          return c.support_core(d);
+          return f(c);
       },
       core);
+}
+
+/// Support of one primitive core.
+inline Vec3 support_core(const Core& core, const Vec3& d) {
+  return visit_core(core, [&d](const auto& c) -> Vec3 { return c.support_core(d); });
+}
+
+/// A point of one primitive core towards its middle.
+inline Vec3 core_centre(const Core& core) {
+  return visit_core(core, [](const auto& c) -> Vec3 { return c.core_centre(); });
+}
+
+inline Vec3 Shape::core_centre() const {
+  Vec3 centre = Vec3::Zero();
+  for (const Core& core : cores_) centre += mink::core_centre(core);
+  return centre;
 }
 
 inline Vec3 Shape::support_core(const Vec3& d) const {

@@ -162,6 +162,62 @@ TEST(BooleanPhase, FlatAndSliverPairsMatchBruteForce) {
   EXPECT_LT(overlapping, n * 9 / 10);
 }
 
+// Pairs placed as a stack is, with the contact on the line of centres: the first phase starts
+// from the difference of the centres, and when the origin lies within touching range of its
+// segment to the first support point it says "intersecting" at once. Depths and gaps from deep to
+// within rounding of touching, either side of the 1e-12 touching tolerance, far from the world
+// origin too; intersect() and distance() against brute force over the Minkowski difference.
+TEST(BooleanPhase, ContactOnTheLineOfCentresMatchesBruteForce) {
+  const int n = oracle::sweep_count(400);
+  int overlapping = 0, separated = 0, decided_at_once = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = 888000 + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    oracle::Rng rng(seed);
+    // Points about their mean, so that the local origin is the centre (as core_centre() says).
+    auto cloud = [&rng](int count) {
+      std::vector<Vec3> points;
+      for (int k = 0; k < count; ++k) points.push_back(rng.in_ball(1.0));
+      Vec3 mean = Vec3::Zero();
+      for (const Vec3& p : points) mean += p / double(count);
+      for (Vec3& p : points) p -= mean;
+      return points;
+    };
+    const std::vector<Vec3> a_points = cloud(rng.integer(4, 12)),
+                            b_points = cloud(rng.integer(4, 12));
+    const Vec3 offset = rng.chance(0.3) ? Vec3(1e6, -2e6, 5e5) : Vec3::Zero();
+    const Pose pa = Pose::from(offset + rng.in_ball(2.0), rng.rotation());
+    const mink::Quat turn_b = rng.rotation();
+    // B's farthest point against -axis goes to a point of A's centre-to-support segment a
+    // fraction `inset` in from A's support point along axis (negative: out beyond it).
+    const Vec3 axis = rng.in_ball(1.0).normalized();
+    auto world_support = [](const std::vector<Vec3>& points, const Pose& pose, const Vec3& d) {
+      Vec3 best = pose.apply(points[0]);
+      for (const Vec3& p : points)
+        if (pose.apply(p).dot(d) > best.dot(d)) best = pose.apply(p);
+      return best;
+    };
+    const Vec3 on_a = world_support(a_points, pa, axis);
+    const double insets[] = {0.5, 0.1, 1e-4, 1e-9, 1e-12, 1e-13, 0, -1e-13, -1e-11, -1e-6, -0.1};
+    const double inset = insets[i % std::size(insets)];
+    const Vec3 shared = on_a + inset * (pa.translation - on_a);
+    const Vec3 on_b_local = world_support(b_points, Pose::from(Vec3::Zero(), turn_b), -axis);
+    const Pose pb = Pose::from(shared - (1 - inset) * on_b_local, turn_b);
+    expect_boolean_matches_brute_force(a_points, pa, b_points, pb);
+    const auto a = *mink::Polytope::make(a_points);
+    const auto b = *mink::Polytope::make(b_points);
+    const auto got = mink::intersect(a, pa, b, pb);
+    EXPECT_EQ(got.intersect, mink::distance(a, pa, b, pb).intersect);
+    (got.intersect ? overlapping : separated) += 1;
+    decided_at_once += got.intersect && got.iterations == 1;
+  }
+  EXPECT_GT(overlapping, n / 4);
+  EXPECT_GT(separated, n / 8);
+  // The segment's test decides some of them from the first support point (the rest take the
+  // tetrahedron's), so the sweep reaches it.
+  EXPECT_GT(decided_at_once, n / 20);
+}
+
 // The yes/no test compares squares of squares (a bound's square times |v|'s square), which leave
 // the range of doubles at sizes beyond about 2^+-250: a sphere of 3e-152 overlapping a polytope
 // of 4e-149 (3e-145 from the origin) by 1e-5 of the gap was called apart once the product
