@@ -139,7 +139,7 @@ class PolytopeT {
   [[gnu::always_inline]] inline Vec3T<S> support_core(const Vec3T<S>& d) const {
     return point(support_index(d));
   }
-  /// The mean of the points: inside the hull, which its vertices alone may not be.
+  /// The mean of the points: inside the hull (any one point may be a vertex, on its boundary).
   const Vec3T<S>& core_centre() const { return centre_; }
   S core_radius() const { return S(0); }
   S bounding_radius() const { return bounding_radius_; }
