@@ -17,6 +17,7 @@ struct PolytopeRef {
   using Scalar = double;
   const Polytope* polytope;
   Vec3 support_core(const Vec3& d) const { return polytope->support_core(d); }
+  Vec3 core_centre() const { return polytope->core_centre(); }
   double core_radius() const { return 0; }
   double bounding_radius() const { return polytope->bounding_radius(); }
   const char* error() const { return polytope->error(); }
@@ -33,6 +34,7 @@ struct HullRef {
   using Scalar = double;
   const ConvexHullShape* hull;
   Vec3 support_core(const Vec3& d) const { return hull->support_core(d); }
+  Vec3 core_centre() const { return hull->core_centre(); }
   double core_radius() const { return 0; }
   double bounding_radius() const { return hull->bounding_radius(); }
   const char* error() const { return hull->error(); }

@@ -210,6 +210,11 @@ TEST(BooleanPhase, ContactOnTheLineOfCentresMatchesBruteForce) {
     EXPECT_EQ(got.intersect, mink::distance(a, pa, b, pb).intersect);
     (got.intersect ? overlapping : separated) += 1;
     decided_at_once += got.intersect && got.iterations == 1;
+    // The run-time Shape runs the same first phase, from the same centres.
+    const auto run_time =
+        mink::intersect(*mink::Shape::polytope(a_points), pa, *mink::Shape::polytope(b_points), pb);
+    EXPECT_EQ(run_time.intersect, got.intersect);
+    EXPECT_EQ(run_time.iterations, got.iterations);
   }
   EXPECT_GT(overlapping, n / 4);
   EXPECT_GT(separated, n / 8);
