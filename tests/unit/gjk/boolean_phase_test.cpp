@@ -215,6 +215,13 @@ TEST(BooleanPhase, ContactOnTheLineOfCentresMatchesBruteForce) {
         mink::intersect(*mink::Shape::polytope(a_points), pa, *mink::Shape::polytope(b_points), pb);
     EXPECT_EQ(run_time.intersect, got.intersect);
     EXPECT_EQ(run_time.iterations, got.iterations);
+    // So do hull shapes (their centre is the mean of the hull's vertices, not of the points).
+    const auto hull = mink::intersect(*mink::ConvexHullShape::make(a_points), pa,
+                                      *mink::ConvexHullShape::make(b_points), pb);
+    const auto run_time_hull = mink::intersect(*mink::Shape::convex_hull(a_points), pa,
+                                               *mink::Shape::convex_hull(b_points), pb);
+    EXPECT_EQ(run_time_hull.intersect, hull.intersect);
+    EXPECT_EQ(run_time_hull.iterations, hull.iterations);
   }
   EXPECT_GT(overlapping, n / 4);
   EXPECT_GT(separated, n / 8);
