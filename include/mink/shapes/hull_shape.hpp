@@ -27,8 +27,11 @@
 /// moves from the next one. But a shape shared by many bodies, or queried as A and as B, sees
 /// directions jump, so when the hint is not the answer the climb also looks up a start in a
 /// direction table (6 k^2 cells of the cube of directions, each holding its centre's answer, k
-/// about sqrt(n / 24)) and jumps there if it is higher than the hint's best neighbour: a cold
-/// query starts a step or two from its answer, a warm one that needs no move skips the table.
+/// about sqrt(2 n / 3): some four cells per vertex) and jumps there if it is higher than the
+/// hint's best neighbour. A cold query then starts on its answer or next to it, a warm one that
+/// needs no move skips the table. A table that fits in cache (kHullSmallSeedTable) is read as soon
+/// as the hint is not the answer; a larger one only after kHullSeedAfterMoves moves, since its
+/// read is a cache miss that a warm query needing one move should not pay.
 /// The hint lives in the shape as a relaxed `std::atomic<std::uint32_t>` on its own cache line:
 /// support is `const` and shapes are shared between threads, any start is correct (see Ties) so a
 /// race between threads only changes a start, and a relaxed 32-bit load and store compile to
@@ -102,10 +105,17 @@ inline constexpr std::size_t kHullClimbMinVertices = 64;
 /// larger one is resolved by the scan, with the same answer.
 inline constexpr std::size_t kHullPlateauLimit = 32;
 
-/// A climb from the hint that has made this many moves looks up the direction table: warm queries
-/// (the answer a move or two from the hint) then never read the table, whose seed vertex is a
-/// cache miss on hulls larger than the cache (36 ns instead of 19 at 4,096 vertices, measured
-/// with bench/hull_support_bench.cpp), while cold ones take two steps before jumping.
+/// A direction table of at most this many cells (32 KB; hulls of up to about 1,900 vertices) is
+/// looked up as soon as the hint turns out not to be the answer: it stays in cache beside the
+/// hull, and a cold query (random directions) saves the two moves it would otherwise climb before
+/// jumping (support cold 38 ns instead of 59 at 128 vertices, 46 instead of 80 at 512, with warm
+/// queries unchanged; bench/hull_support_bench.cpp).
+inline constexpr std::size_t kHullSmallSeedTable = 8192;
+
+/// A climb from the hint on a hull with a larger table looks the table up after this many moves:
+/// warm queries (the answer a move or two from the hint) then never read it, and its read is a
+/// cache miss (warm queries 28 ns instead of 20 at 4,096 vertices, measured with
+/// bench/hull_support_bench.cpp), while cold ones take two steps before jumping.
 inline constexpr std::size_t kHullSeedAfterMoves = 2;
 
 template <class S>
@@ -311,6 +321,7 @@ class ConvexHullShapeT {
     status_ = o.status_;
     climbs_ = o.climbs_;
     seed_cells_ = o.seed_cells_;
+    seed_after_moves_ = o.seed_after_moves_;
     tolerance_ = o.tolerance_;
     bounding_radius_ = o.bounding_radius_;
     centre_ = o.centre_;
@@ -354,14 +365,17 @@ class ConvexHullShapeT {
   }
 
   /// The direction table: the cube of directions, each face cut into k x k cells (k about
-  /// sqrt(n / 24), so a cell spans a few vertices), each cell holding the support vertex of its
-  /// centre direction. Cold queries then start a step or two from their answer. Built by climbing
-  /// from the previous cell's answer, so it costs about one climb step per cell.
+  /// sqrt(2 n / 3), so some four cells share a vertex's normal cone), each cell holding the
+  /// support vertex of its centre direction. Cold queries then start on their answer or a move
+  /// from it; a coarser table (k about sqrt(n / 24), one cell for several vertices) left them
+  /// two or three moves away. Built by climbing from the previous cell's answer, so it costs
+  /// about one climb step per cell: 3 to 10 % of building the hull.
   void build_seeds() {
-    seed_cells_ =
-        std::clamp<std::size_t>(std::size_t(std::sqrt(double(nodes_.size()) / 24.0)), 1, 64);
+    seed_cells_ = std::clamp<std::size_t>(
+        std::size_t(std::ceil(std::sqrt(double(nodes_.size()) * (2.0 / 3.0)))), 1, 64);
     const std::size_t k = seed_cells_;
     seeds_.assign(6 * k * k, 0);
+    seed_after_moves_ = seeds_.size() <= kHullSmallSeedTable ? 0 : kHullSeedAfterMoves;
     std::uint32_t v = 0;
     for (std::size_t face = 0; face < 6; ++face) {
       const int axis = int(face / 2);
@@ -380,7 +394,7 @@ class ConvexHullShapeT {
   }
 
   /// Strict-improvement climb from `start`, whose support value is `best`. kSeed: after
-  /// kHullSeedAfterMoves moves, jump to the direction table's seed if it is higher than the best
+  /// seed_after_moves_ moves, jump to the direction table's seed if it is higher than the best
   /// neighbour (still a strict improvement, so the bound on moves holds).
   template <bool kSeed>
   std::uint32_t climb(const Vec3T<S>& d, std::uint32_t start, S best) const {
@@ -402,7 +416,7 @@ class ConvexHullShapeT {
       }
       if (next == end) return tie ? plateau_index(d, v, best) : v;
       if constexpr (kSeed) {
-        if (moves == kHullSeedAfterMoves) {
+        if (moves == seed_after_moves_) {
           const std::uint32_t seed = seed_index(d);
           const S seed_value = dot(nodes_[seed].p, dx, dy, dz);
           if (seed_value > next_value) {
@@ -459,7 +473,8 @@ class ConvexHullShapeT {
   std::vector<Vec3T<S>> face_normals_;  // unit, outward
   // CSR lists: face f's vertex loop, and the faces around vertex v.
   std::vector<std::uint32_t> face_begin_, face_loops_, vertex_face_begin_, vertex_faces_;
-  std::size_t seed_cells_ = 0;  // k
+  std::size_t seed_cells_ = 0;                          // k
+  std::size_t seed_after_moves_ = kHullSeedAfterMoves;  // moves before the table is read
   HullStatus status_ = HullStatus::Point;
   bool climbs_ = false;
   S tolerance_ = S(0);
