@@ -366,10 +366,11 @@ class ConvexHullShapeT {
 
   /// The direction table: the cube of directions, each face cut into k x k cells (k about
   /// sqrt(2 n / 3), so some four cells share a vertex's normal cone), each cell holding the
-  /// support vertex of its centre direction. Cold queries then start on their answer or a move
-  /// from it; a coarser table (k about sqrt(n / 24), one cell for several vertices) left them
-  /// two or three moves away. Built by climbing from the previous cell's answer, so it costs
-  /// about one climb step per cell: 3 to 10 % of building the hull.
+  /// support vertex of its centre direction. A random direction's seed is then its answer three
+  /// times in four, and one move from it otherwise (points on an ellipsoid, 64 to 4,096
+  /// vertices); a coarser table (k about sqrt(n / 24), one cell for several vertices) left cold
+  /// queries two or three moves away. Built by climbing from the previous cell's answer, so it
+  /// costs about one climb step per cell: a tenth of building the hull at 128 vertices.
   void build_seeds() {
     seed_cells_ = std::clamp<std::size_t>(
         std::size_t(std::ceil(std::sqrt(double(nodes_.size()) * (2.0 / 3.0)))), 1, 64);
