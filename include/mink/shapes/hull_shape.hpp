@@ -108,8 +108,9 @@ inline constexpr std::size_t kHullPlateauLimit = 32;
 /// A direction table of at most this many cells (32 KB; hulls of up to about 1,900 vertices) is
 /// looked up as soon as the hint turns out not to be the answer: it stays in cache beside the
 /// hull, and a cold query (random directions) saves the two moves it would otherwise climb before
-/// jumping (support cold 38 ns instead of 59 at 128 vertices, 46 instead of 80 at 512, with warm
-/// queries unchanged; bench/hull_support_bench.cpp).
+/// jumping (support cold 37 ns instead of 59 at 128 vertices, 44 instead of 78 at 512; warm
+/// queries, which read it only when they move, within a nanosecond except at 256 vertices, 5 ns
+/// slower; bench/hull_support_bench.cpp).
 inline constexpr std::size_t kHullSmallSeedTable = 8192;
 
 /// A climb from the hint on a hull with a larger table looks the table up after this many moves:
