@@ -322,7 +322,6 @@ class ConvexHullShapeT {
     status_ = o.status_;
     climbs_ = o.climbs_;
     seed_cells_ = o.seed_cells_;
-    seed_after_moves_ = o.seed_after_moves_;
     tolerance_ = o.tolerance_;
     bounding_radius_ = o.bounding_radius_;
     centre_ = o.centre_;
@@ -377,7 +376,6 @@ class ConvexHullShapeT {
         std::size_t(std::ceil(std::sqrt(double(nodes_.size()) * (2.0 / 3.0)))), 1, 64);
     const std::size_t k = seed_cells_;
     seeds_.assign(6 * k * k, 0);
-    seed_after_moves_ = seeds_.size() <= kHullSmallSeedTable ? 0 : kHullSeedAfterMoves;
     std::uint32_t v = 0;
     for (std::size_t face = 0; face < 6; ++face) {
       const int axis = int(face / 2);
@@ -395,14 +393,21 @@ class ConvexHullShapeT {
     }
   }
 
+  /// Moves a climb from the hint makes before it reads the direction table: none for a table that
+  /// stays in cache (kHullSmallSeedTable), kHullSeedAfterMoves for a larger one.
+  std::size_t seed_after_moves() const {
+    return seeds_.size() <= kHullSmallSeedTable ? 0 : kHullSeedAfterMoves;
+  }
+
   /// Strict-improvement climb from `start`, whose support value is `best`. kSeed: after
-  /// seed_after_moves_ moves, jump to the direction table's seed if it is higher than the best
+  /// seed_after_moves() moves, jump to the direction table's seed if it is higher than the best
   /// neighbour (still a strict improvement, so the bound on moves holds).
   template <bool kSeed>
   std::uint32_t climb(const Vec3T<S>& d, std::uint32_t start, S best) const {
     const S dx = d.x(), dy = d.y(), dz = d.z();
     std::uint32_t v = start;
     std::uint32_t begin = nodes_[v].begin, end = nodes_[v].end;
+    const std::size_t seed_after = kSeed ? seed_after_moves() : 0;
     // Each move strictly increases the support value, so at most size() - 1 moves can happen.
     for (std::size_t moves = 0; moves < nodes_.size(); ++moves) {
       std::uint32_t next = end;  // none
@@ -418,7 +423,7 @@ class ConvexHullShapeT {
       }
       if (next == end) return tie ? plateau_index(d, v, best) : v;
       if constexpr (kSeed) {
-        if (moves == seed_after_moves_) {
+        if (moves == seed_after) {
           const std::uint32_t seed = seed_index(d);
           const S seed_value = dot(nodes_[seed].p, dx, dy, dz);
           if (seed_value > next_value) {
@@ -475,8 +480,7 @@ class ConvexHullShapeT {
   std::vector<Vec3T<S>> face_normals_;  // unit, outward
   // CSR lists: face f's vertex loop, and the faces around vertex v.
   std::vector<std::uint32_t> face_begin_, face_loops_, vertex_face_begin_, vertex_faces_;
-  std::size_t seed_cells_ = 0;                          // k
-  std::size_t seed_after_moves_ = kHullSeedAfterMoves;  // moves before the table is read
+  std::size_t seed_cells_ = 0;  // k
   HullStatus status_ = HullStatus::Point;
   bool climbs_ = false;
   S tolerance_ = S(0);
