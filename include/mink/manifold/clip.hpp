@@ -77,13 +77,13 @@ int clip_by_line(const PlanarPoint<S>* in, int count, Height&& height, S slack,
   return n;
 }
 
-/// Index of the first of `count` (<= kMaxClipPoints) values within `slack` of their maximum, or -1
+/// Index of the first of `count` (<= kCapacity) values within `slack` of their maximum, or -1
 /// when that maximum is not above `floor`. Taking the first near-maximum rather than the maximum
 /// makes the choice depend on the order of the points (fixed by the shapes' local frames) instead
 /// of on rounding: the same points survive a rigid motion of both shapes and tiny perturbations.
-template <class S, class Value>
+template <int kCapacity = kMaxClipPoints, class S, class Value>
 [[gnu::always_inline]] inline int first_near_max(int count, S floor, S slack, Value&& value) {
-  S values[kMaxClipPoints];
+  S values[kCapacity];
   S best = floor;
   for (int i = 0; i < count; ++i) best = std::max(best, values[i] = value(i));
   if (!(best > floor)) return -1;
@@ -92,28 +92,25 @@ template <class S, class Value>
   return -1;
 }
 
-/// Indices of at most four of the `count` points (seen along the normal, with depths) that keep
-/// the deepest point and as much of the contact area as possible: the deepest point, the point
-/// farthest from it, the point making the largest triangle with those two, and the point that
-/// adds the most area outside that triangle. Points on a line keep the deepest and both ends.
-/// Points closer than `min_length` to a kept point (or to the line or triangle of the kept ones)
-/// are dropped as repeats; candidates within `min_length` (or the matching area) of the best count
-/// as ties and the first one wins. Returns the number kept.
-template <class S>
-int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* keep) {
-  if (count <= 0) return 0;
-  if (count == 1) {  // most deep random overlaps: a vertex on a face, or crossing edges
-    keep[0] = 0;
-    return 1;
-  }
-  const int a = first_near_max(count, -std::numeric_limits<S>::infinity(), min_length,
-                               [&](int i) { return points[i].depth; });
+/// reduce_to_four() (below) with the number of points fixed at compile time (kFixed > 0) or given
+/// at run time (0): with a fixed count the loops unroll and their values stay in registers.
+template <int kFixed, class S>
+[[gnu::always_inline]] inline int reduce_points_to_four(const PlanarPoint<S>* points,
+                                                        int run_time_count, S min_length,
+                                                        int* keep) {
+  constexpr int kCapacity = kFixed > 0 ? kFixed : kMaxClipPoints;
+  const int count = kFixed > 0 ? kFixed : run_time_count;
+  auto near_max = [count](S floor, S slack, auto&& value) {
+    return first_near_max<kCapacity>(count, floor, slack, value);
+  };
+  const int a = near_max(-std::numeric_limits<S>::infinity(), min_length,
+                         [&](int i) { return points[i].depth; });
   keep[0] = a < 0 ? 0 : a;
   const PlanarPoint<S> pa = points[keep[0]];
   // The farthest point, on squared lengths: one square root instead of one per point (a point
   // within min_length of the farthest length l counts as a tie: its squared length is at least
   // (l - min_length)^2).
-  S length_sq[kMaxClipPoints];
+  S length_sq[kCapacity];
   S farthest_sq = S(0);
   int farthest = 0;
   for (int i = 0; i < count; ++i) {
@@ -138,13 +135,12 @@ int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* k
   };
   const Edge ab = edge(pa, pb);
   const S min_area = min_length * std::sqrt(length_sq[b]);
-  const int c = first_near_max(count, min_area, min_area,
-                               [&](int i) { return std::abs(ab.area(points[i])); });
+  const int c = near_max(min_area, min_area, [&](int i) { return std::abs(ab.area(points[i])); });
   if (c < 0) {
     // All on a line (skew edges): the deepest point may lie between the ends, so the end beyond
     // it, opposite the farthest one, is kept too.
     const S dx = pb.x - pa.x, dy = pb.y - pa.y;
-    const int e = first_near_max(count, min_area, min_area, [&](int i) {
+    const int e = near_max(min_area, min_area, [&](int i) {
       return -((points[i].x - pa.x) * dx + (points[i].y - pa.y) * dy);
     });
     if (e < 0) return 2;
@@ -156,13 +152,40 @@ int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* k
   PlanarPoint<S> t0 = pa, t1 = pb, t2 = points[c];
   if (ab.area(t2) < S(0)) std::swap(t1, t2);
   const Edge e0 = edge(t0, t1), e1 = edge(t1, t2), e2 = edge(t2, t0);
-  const int d = first_near_max(count, min_area, min_area, [&](int i) {
+  const int d = near_max(min_area, min_area, [&](int i) {
     const PlanarPoint<S>& p = points[i];
     return -std::min(std::min(e0.area(p), e1.area(p)), e2.area(p));
   });
   if (d < 0) return 3;
   keep[3] = d;
   return 4;
+}
+
+/// Indices of at most four of the `count` points (seen along the normal, with depths) that keep
+/// the deepest point and as much of the contact area as possible: the deepest point, the point
+/// farthest from it, the point making the largest triangle with those two, and the point that
+/// adds the most area outside that triangle. Points on a line keep the deepest and both ends.
+/// Points closer than `min_length` to a kept point (or to the line or triangle of the kept ones)
+/// are dropped as repeats; candidates within `min_length` (or the matching area) of the best count
+/// as ties and the first one wins. Returns the number kept.
+template <class S>
+int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* keep) {
+  if (count <= 0) return 0;
+  if (count == 1) {  // most deep random overlaps: a vertex on a face, or crossing edges
+    keep[0] = 0;
+    return 1;
+  }
+  if (count == 2) {  // an edge on a face: what the general steps keep of two points
+    const int a =
+        points[0].depth >= std::max(points[0].depth, points[1].depth) - min_length ? 0 : 1;
+    keep[0] = a;
+    keep[1] = 1 - a;
+    const S x = points[1].x - points[0].x, y = points[1].y - points[0].y;
+    return x * x + y * y > min_length * min_length ? 2 : 1;
+  }
+  // Four points, a box's face on a face, are the common case of resting contact.
+  if (count == 4) return reduce_points_to_four<4>(points, count, min_length, keep);
+  return reduce_points_to_four<0>(points, count, min_length, keep);
 }
 
 }  // namespace mink::detail

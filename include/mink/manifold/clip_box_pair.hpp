@@ -69,6 +69,7 @@ void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
       out.on_b[0] = on_b;
       out.planar[0] = {S(0), S(0), (on_a - on_b).dot(n)};
       out.count = 1;
+      out.pairs_along_normal = false;  // clamped to an edge's end, they need not be
     }
     return;
   }

@@ -28,6 +28,9 @@ inline constexpr double kSideSlack = 1e-8;
 template <class S>
 struct ClippedPoints {
   int count = 0;
+  /// Each on_b is on_a - depth * n (n the normal in A's frame), as clipping makes them; false when
+  /// some pair is not (the closest points of two crossing edges).
+  bool pairs_along_normal = true;
   Vec3T<S> on_a[kMaxClipPoints];
   Vec3T<S> on_b[kMaxClipPoints];
   PlanarPoint<S> planar[kMaxClipPoints];  ///< seen along the normal, with the depths

@@ -112,7 +112,8 @@ using ManifoldResult = ManifoldResultT<double>;
 
 namespace detail {
 
-/// Step 4 and the world frame: reduces `clipped` to at most four points of `result`.
+/// Step 4 and the world frame: reduces `clipped` to at most four points of `result`, whose
+/// normal is set.
 template <class S>
 void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
                ManifoldResultT<S>& result) {
@@ -120,11 +121,15 @@ void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
   const int kept = detail::reduce_to_four(clipped.planar, clipped.count, S(1e-9) * size, keep);
   result.count = kept;
   for (int i = 0; i < kept; ++i) {
-    // Both points transformed: the closest points of two crossing edges clamped to an edge's end
-    // are not apart along the normal, and each must stay on its surface.
-    result.points[i].point_a = pose_a.apply(clipped.on_a[keep[i]]);
-    result.points[i].point_b = pose_a.apply(clipped.on_b[keep[i]]);
-    result.points[i].depth = clipped.planar[keep[i]].depth;
+    const S depth = clipped.planar[keep[i]].depth;
+    ManifoldPointT<S>& point = result.points[i];
+    point.point_a = pose_a.apply(clipped.on_a[keep[i]]);
+    // point_b follows from point_a along the normal (one transform a point instead of two),
+    // unless the pair is not apart along it: the closest points of two crossing edges clamped to
+    // an edge's end, each of which must stay on its surface.
+    point.point_b = clipped.pairs_along_normal ? Vec3T<S>(point.point_a - depth * result.normal)
+                                               : pose_a.apply(clipped.on_b[keep[i]]);
+    point.depth = depth;
   }
 }
 
