@@ -175,15 +175,9 @@ int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* k
     keep[0] = 0;
     return 1;
   }
-  if (count == 2) {  // an edge on a face: what the general steps keep of two points
-    const int a =
-        points[0].depth >= std::max(points[0].depth, points[1].depth) - min_length ? 0 : 1;
-    keep[0] = a;
-    keep[1] = 1 - a;
-    const S x = points[1].x - points[0].x, y = points[1].y - points[0].y;
-    return x * x + y * y > min_length * min_length ? 2 : 1;
-  }
-  // Four points, a box's face on a face, are the common case of resting contact.
+  // Two points (an edge on a face) and four (a box's face on a face) are the common cases of
+  // resting contact.
+  if (count == 2) return reduce_points_to_four<2>(points, count, min_length, keep);
   if (count == 4) return reduce_points_to_four<4>(points, count, min_length, keep);
   return reduce_points_to_four<0>(points, count, min_length, keep);
 }

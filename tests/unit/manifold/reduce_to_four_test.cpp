@@ -1,5 +1,5 @@
-// reduce_to_four(): the forms for two and four points (a direct one, and the steps unrolled for a
-// count fixed at compile time) against the steps run with the count given at run time, on random
+// reduce_to_four(): the forms for two and four points (the steps unrolled for a count fixed at
+// compile time) against the steps run with the count given at run time, on random
 // points and on the cases where they could part: equal and nearly equal depths (within
 // min_length), repeated points, points on a line, and squares and rectangles, whose diagonals and
 // sides tie. And against answers that need no reduction code: a convex quadrilateral keeps all four
