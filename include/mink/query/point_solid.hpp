@@ -179,7 +179,8 @@ struct SolidCore<CylinderT<S>> : std::true_type, GapOfClamp<SolidCore<CylinderT<
 /// A polytope of 4 to 63 points, through its face planes (face_planes.hpp; none before the
 /// polytope has built them). Inside: out through the face plane nearest to p. Outside: the
 /// nearest corner when p lies in its normal cone, else (up to kNearestMaxFaces faces) the nearest
-/// point of the faces whose planes p is above, in a face or on an edge. Nothing (GJK answers) for
+/// point of the faces whose planes p is above, in a face or on an edge; above that, the face p
+/// is farthest above or one of its edges, where they are the nearest. Nothing (GJK answers) for
 /// coordinates beyond 2^488 (2^40 in float), whose squares would overflow, and for a point
 /// outside whose nearest point is on an edge or a corner less than 1e-3 of the coordinates' size
 /// away: the gap's rounding would tilt the normal. Ties: p inside, as deep below two faces.
@@ -190,14 +191,16 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
 
   /// Outside, the nearest point is searched over the faces p is above only up to this many
   /// faces: each costs a few branches per edge, and from about 20 faces GJK's few support
-  /// calls cost less.
+  /// calls cost less. Above it, nearest_by_largest_face() tries one face and its edges.
   static constexpr std::uint32_t kNearestMaxFaces = 20;
 
   static constexpr S kLargest = power_of_two<S>(std::numeric_limits<S>::max_exponent / 2 - 24);
 
   /// The signed distances of p from the face planes (positive above), into `above` unless it is
-  /// null; returns the largest, or nothing for p beyond kLargest.
-  static std::optional<S> plane_distances(const Core& c, const Vec3T<S>& p, S* above) {
+  /// null; returns the largest, or nothing for p beyond kLargest. With `above` null, the scan
+  /// may stop at the first distance above `enough` and return it: the yes/no test needs no more.
+  static std::optional<S> plane_distances(const Core& c, const Vec3T<S>& p, S* above,
+                                          S enough = std::numeric_limits<S>::infinity()) {
     // Coordinate by coordinate: p was computed so, and a packed load of two stalls on store
     // forwarding.
     if (!(std::max({std::abs(p.x()), std::abs(p.y()), std::abs(p.z())}) <= kLargest))
@@ -209,12 +212,16 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
       // face to the next. Same operations, in the same order, as the scalar loop below.
       const LaneVec px = lane_set1(p.x()), py = lane_set1(p.y()), pz = lane_set1(p.z());
       LaneVec largest = lane_set1(-std::numeric_limits<double>::infinity());
+      const LaneVec stop = lane_set1(enough);
       for (std::size_t f = 0; f < n; f += kLaneWidth) {
         const LaneVec d = lane_sub(lane_add(lane_add(lane_mul(lane_load(c.nx.data() + f), px),
                                                      lane_mul(lane_load(c.ny.data() + f), py)),
                                             lane_mul(lane_load(c.nz.data() + f), pz)),
                                    lane_load(c.offset.data() + f));
-        if (above) lane_store(above + f, d);
+        if (above)
+          lane_store(above + f, d);
+        else if (lane_any_greater(d, stop))
+          return lane_hmax(lane_max(largest, d));
         largest = lane_max(largest, d);
       }
       return lane_hmax(largest);
@@ -392,19 +399,52 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
     return out;
   }
 
+  /// p outside, above kNearestMaxFaces faces, where the edge search costs more than GJK: the
+  /// nearest point when it lies on the face f that p is farthest above or inside one of its
+  /// edges, else an infinite distance (a corner, which the caller tried first, or a corner of f). f
+  /// decides when p projects into it, as in nearest_outside(). Else p's foot on f's plane is beyond
+  /// one or two of f's edges, and over the interior of at most one of them, e (a convex polygon's
+  /// edge regions do not overlap). Then e's nearest point q to p is the polytope's: p - q is in
+  /// e's normal cone, between f's normal and that of the face g across e, since otherwise p would
+  /// be over g's side of e, and then (in the plane normal to e, with g dropping by an angle
+  /// d < 90 degrees from f's plane) p's height above g exceeds its height h above f by at least
+  /// h (1 - cos d) / cos d, against f being the farthest.
+  static Nearest nearest_by_largest_face(const Core& c, const Vec3T<S>& p, const S* above,
+                                         S largest) {
+    const std::uint32_t f = face_at(c, above, largest);
+    const std::uint32_t begin = c.edge_begin[f], end = c.edge_begin[f + 1];
+    bool in_face = true;
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const Vec3T<S> from_corner = p - c.corner[k];
+      if (c.inward[k].dot(from_corner) >= S(0)) continue;
+      in_face = false;
+      const Vec3T<S> edge = c.corner[k + 1 == end ? begin : k + 1] - c.corner[k];
+      const S t = from_corner.dot(edge) / edge.squaredNorm();
+      if (!(t > S(0) && t < S(1))) continue;  // beyond a corner of f
+      const Vec3T<S> q = c.corner[k] + t * edge;
+      return Nearest{q, (p - q).squaredNorm(), -1, edge};
+    }
+    if (!in_face) return {p, std::numeric_limits<S>::infinity(), -1, Vec3T<S>::Zero()};
+    return {p - above[f] * c.normal(f), above[f] * above[f], int(f), Vec3T<S>::Zero()};
+  }
+
   static std::optional<Vec3T<S>> gap(const Core& c, const Vec3T<S>& p, S reach) {
     // The distances are kept only for the edge search, which few points need; the stores cost
     // more than their time (one run in three was 50 % slower, from where the stack fell).
-    const std::optional<S> scanned = plane_distances(c, p, nullptr);
+    const std::optional<S> scanned = plane_distances(c, p, nullptr, reach);
     if (!scanned) return std::nullopt;
     const S largest = *scanned;
     if (largest <= S(0)) return Vec3T<S>::Zero();
     // Farther from a plane than reach: as far from the polytope. Any vector that long will do.
     if (largest > reach) return Vec3T<S>(largest, S(0), S(0));
     if (const auto by_corner = gap_by_corner(c, p, reach)) return by_corner;
-    if (c.face_count > kNearestMaxFaces) return std::nullopt;
     alignas(32) std::array<S, Core::kMaxFaces> above;
     plane_distances(c, p, above.data());
+    if (c.face_count > kNearestMaxFaces) {
+      const Nearest nearest = nearest_by_largest_face(c, p, above.data(), largest);
+      if (!(nearest.distance_sq < std::numeric_limits<S>::infinity())) return std::nullopt;
+      return Vec3T<S>(p - nearest.point);
+    }
     return Vec3T<S>(p - nearest_outside<false>(c, p, above.data(), reach * reach).point);
   }
 
@@ -445,8 +485,10 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
         return out;
       }
     }
-    if (c.face_count > kNearestMaxFaces) return std::nullopt;
-    const Nearest nearest = nearest_outside<true>(c, p, above.data());
+    const Nearest nearest = c.face_count > kNearestMaxFaces
+                                ? nearest_by_largest_face(c, p, above.data(), *largest)
+                                : nearest_outside<true>(c, p, above.data());
+    if (!(nearest.distance_sq < std::numeric_limits<S>::infinity())) return std::nullopt;
     out.on_solid = nearest.point;
     if (nearest.face >= 0) {
       out.out_of_solid = c.normal(std::size_t(nearest.face));

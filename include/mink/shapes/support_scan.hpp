@@ -73,6 +73,9 @@ inline double lane_hmax(LaneVec v) {
 inline void lane_store(double* p, LaneVec v) {
   _mm256_storeu_pd(p, v);
 }
+inline bool lane_any_greater(LaneVec a, LaneVec b) {
+  return _mm256_movemask_pd(_mm256_cmp_pd(a, b, _CMP_GT_OQ)) != 0;
+}
 #else
 using LaneVec = __m128d;
 constexpr int kLaneWidth = 2;
@@ -99,6 +102,9 @@ inline double lane_hmax(LaneVec v) {
 }
 inline void lane_store(double* p, LaneVec v) {
   _mm_storeu_pd(p, v);
+}
+inline bool lane_any_greater(LaneVec a, LaneVec b) {
+  return _mm_movemask_pd(_mm_cmpgt_pd(a, b)) != 0;
 }
 #endif
 

@@ -30,9 +30,12 @@ using oracle::widen;
 
 enum Kind { kRandom, kRound, kBox, kDuplicates, kNearlyCoplanar, kFlat, kNeedle, kKinds };
 
-std::vector<Vec3> point_set(Rng& rng, int kind, double scale) {
+/// `many`: 25 to 34 points, whose hulls have more faces (about 46 to 64 in general position) than
+/// the planes' edge search takes (SolidCore<Polytope>::kNearestMaxFaces), so that a centre outside
+/// is decided by the face it is farthest above and that face's edges, or by GJK.
+std::vector<Vec3> point_set(Rng& rng, int kind, double scale, bool many = false) {
   std::vector<Vec3> pts;
-  const int count = rng.integer(4, 24);
+  const int count = many ? rng.integer(25, 34) : rng.integer(4, 40);
   if (kind == kBox || kind == kNearlyCoplanar) {
     const Vec3 half(rng.log_uniform(0.05, 1), rng.log_uniform(0.05, 1), rng.log_uniform(0.05, 1));
     for (int i = 0; i < 8; ++i)
@@ -81,8 +84,9 @@ Vec3 centre_near(Rng& rng, const std::vector<Vec3>& pts, double scale) {
   }
 }
 
-/// Sweeps spheres (radius 0: a point; `rounded`: a Rounded<Point>) against polytopes with planes.
-void sweep(std::uint64_t base, int default_count, const char* name) {
+/// Sweeps spheres (radius 0: a point; `rounded`: a Rounded<Point>) against polytopes with planes;
+/// `many`: random and round sets of 25 to 34 points only (point_set()).
+void sweep(std::uint64_t base, int default_count, const char* name, bool many = false) {
   const int n = oracle::sweep_count(default_count);
   oracle::Worst worst(std::string(name) + " distance");
   oracle::DepthWorst depth_worst(std::string(name) + " contact");
@@ -91,9 +95,9 @@ void sweep(std::uint64_t base, int default_count, const char* name) {
     const std::uint64_t seed = base + i;
     SCOPED_TRACE(oracle::seed_note(seed));
     Rng rng(seed);
-    const int kind = rng.integer(0, kKinds - 1);
+    const int kind = many ? rng.integer(kRandom, kRound) : rng.integer(0, kKinds - 1);
     const double scale = rng.log_uniform(0.05, 2);
-    const auto local = point_set(rng, kind, scale);
+    const auto local = point_set(rng, kind, scale, many);
     const auto polytope = mink::Polytope::make(local);
     ASSERT_TRUE(polytope);
     const bool planes = polytope->build_face_planes() != nullptr;
@@ -155,6 +159,10 @@ void sweep(std::uint64_t base, int default_count, const char* name) {
 
 TEST(PointPolytope, SpheresAgainstFacePlanesMatchBruteForce) {
   sweep(610000, 3000, "sphere-polytope (face planes)");
+}
+
+TEST(PointPolytope, SpheresAgainstManyFacesMatchBruteForce) {
+  sweep(620000, 3000, "sphere-polytope (many faces)", true);
 }
 
 /// The yes/no test where it is closest to call: a sphere whose radius is the centre's distance
