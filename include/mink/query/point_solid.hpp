@@ -370,33 +370,49 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
     Nearest out{p, std::numeric_limits<S>::infinity(), -1, Vec3T<S>::Zero()};
     for (std::uint32_t f = 0; f < c.face_count; ++f) {
       if (!(above[f] > -below_by)) continue;
-      const std::uint32_t begin = c.edge_begin[f], end = c.edge_begin[f + 1];
-      bool in_face = true;
-      for (std::uint32_t k = begin; k < end; ++k) {
-        const Vec3T<S> from_corner = p - c.corner[k];
-        if (c.inward[k].dot(from_corner) >= S(0)) continue;
-        in_face = false;
-        const Vec3T<S> edge = c.corner[k + 1 == end ? begin : k + 1] - c.corner[k];
-        const S edge_sq = edge.squaredNorm();
-        const S t = edge_sq > S(0) ? std::clamp(from_corner.dot(edge) / edge_sq, S(0), S(1)) : S(0);
-        const Vec3T<S> q = c.corner[k] + t * edge;
-        const S distance_sq = (p - q).squaredNorm();
-        if constexpr (kExact) {
-          const bool inside_edge = t > S(0) && t < S(1);
-          const S slack = rounding * std::sqrt(distance_sq);
-          if (distance_sq < out.distance_sq - slack ||
-              (inside_edge && out.edge == Vec3T<S>::Zero() &&
-               distance_sq <= out.distance_sq + slack))
-            out = {q, distance_sq, -1, inside_edge ? edge : Vec3T<S>::Zero()};
-        } else {
-          if (distance_sq < out.distance_sq) out = {q, distance_sq, -1, Vec3T<S>::Zero()};
-          if (out.distance_sq <= enough_sq) return out;
-        }
-      }
+      bool enough = false;
+      const bool in_face =
+          visit_edges_beyond(c, p, f, [&](const Vec3T<S>& corner, const Vec3T<S>& edge, S along) {
+            const S t = std::clamp(along, S(0), S(1));
+            const Vec3T<S> q = corner + t * edge;
+            const S distance_sq = (p - q).squaredNorm();
+            if constexpr (kExact) {
+              const bool inside_edge = t > S(0) && t < S(1);
+              const S slack = rounding * std::sqrt(distance_sq);
+              if (distance_sq < out.distance_sq - slack ||
+                  (inside_edge && out.edge == Vec3T<S>::Zero() &&
+                   distance_sq <= out.distance_sq + slack))
+                out = {q, distance_sq, -1, inside_edge ? edge : Vec3T<S>::Zero()};
+            } else {
+              if (distance_sq < out.distance_sq) out = {q, distance_sq, -1, Vec3T<S>::Zero()};
+              enough = out.distance_sq <= enough_sq;
+            }
+            return enough;
+          });
+      if (enough) return out;
       if (in_face)
         return {p - above[f] * c.normal(f), above[f] * above[f], int(f), Vec3T<S>::Zero()};
     }
     return out;
+  }
+
+  /// Calls visit(corner, edge, t) for each edge of face f that p lies beyond (outside the edge,
+  /// seen in f's plane): the edge runs from `corner` along `edge`, and p projects on its line at
+  /// corner + t edge (t unclamped; 0 for an edge of length 0). A visit returning true stops.
+  /// Returns whether p projects into f (no edge visited).
+  template <class Visit>
+  static bool visit_edges_beyond(const Core& c, const Vec3T<S>& p, std::uint32_t f, Visit&& visit) {
+    const std::uint32_t begin = c.edge_begin[f], end = c.edge_begin[f + 1];
+    bool in_face = true;
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const Vec3T<S> from_corner = p - c.corner[k];
+      if (c.inward[k].dot(from_corner) >= S(0)) continue;
+      in_face = false;
+      const Vec3T<S> edge = c.corner[k + 1 == end ? begin : k + 1] - c.corner[k];
+      const S edge_sq = edge.squaredNorm();
+      if (visit(c.corner[k], edge, edge_sq > S(0) ? from_corner.dot(edge) / edge_sq : S(0))) break;
+    }
+    return in_face;
   }
 
   /// p outside, above kNearestMaxFaces faces, where the edge search costs more than GJK: the
@@ -412,19 +428,15 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
   static Nearest nearest_by_largest_face(const Core& c, const Vec3T<S>& p, const S* above,
                                          S largest) {
     const std::uint32_t f = face_at(c, above, largest);
-    const std::uint32_t begin = c.edge_begin[f], end = c.edge_begin[f + 1];
-    bool in_face = true;
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const Vec3T<S> from_corner = p - c.corner[k];
-      if (c.inward[k].dot(from_corner) >= S(0)) continue;
-      in_face = false;
-      const Vec3T<S> edge = c.corner[k + 1 == end ? begin : k + 1] - c.corner[k];
-      const S t = from_corner.dot(edge) / edge.squaredNorm();
-      if (!(t > S(0) && t < S(1))) continue;  // beyond a corner of f
-      const Vec3T<S> q = c.corner[k] + t * edge;
-      return Nearest{q, (p - q).squaredNorm(), -1, edge};
-    }
-    if (!in_face) return {p, std::numeric_limits<S>::infinity(), -1, Vec3T<S>::Zero()};
+    Nearest out{p, std::numeric_limits<S>::infinity(), -1, Vec3T<S>::Zero()};
+    const bool in_face =
+        visit_edges_beyond(c, p, f, [&](const Vec3T<S>& corner, const Vec3T<S>& edge, S t) {
+          if (!(t > S(0) && t < S(1))) return false;  // beyond a corner of f
+          const Vec3T<S> q = corner + t * edge;
+          out = {q, (p - q).squaredNorm(), -1, edge};
+          return true;
+        });
+    if (!in_face) return out;
     return {p - above[f] * c.normal(f), above[f] * above[f], int(f), Vec3T<S>::Zero()};
   }
 
