@@ -209,6 +209,10 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.error = detail::kOverflowError;
     return result;
   }
+  // Fills `result` rather than returning a copy of it: every return must name `result`, or the
+  // compiler builds the answer apart and copies it out (no named return value optimisation),
+  // and the copy's loads straddle the stores that built it and stall (10 ns of a sphere-box
+  // contact).
   auto cores_apart = [&] {
     // Separated, penetrating by the radii only, or touching: the status by the rule distance()
     // shares (separate_cores()).
@@ -225,12 +229,14 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     }
     result.error_bound = std::max(S(0), gjk.upper - cores.lower);
     result.status = cores.status;
-    return result;
   };
   // GJK proves the cores apart only with a separating plane (lower bound > touch). Without one
   // (a point inside a needle 1e-7 as thick as it is long: GJK's simplex there is too thin to
   // enclose the origin), EPA decides.
-  if (gjk.upper > touch && gjk.lower > touch) return cores_apart();
+  if (gjk.upper > touch && gjk.lower > touch) {
+    cores_apart();
+    return result;
+  }
   // The cores meet (or may): EPA on the cores, then add the radii.
   // unit_of(): two spheres' centres 5e-159 apart have a subnormal square, and the plain quotient
   // was 2e-8 off unit.
@@ -246,7 +252,10 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   // are apart after all, and GJK's closest points are the answer. So does a flat A - B (two
   // coplanar flat boxes side by side) that GJK's upper bound keeps the origin off: it has no
   // interior, and separate_cores() tells apart from touching by the rule distance() uses.
-  if (gjk.upper > touch && (epa.upper < -touch || epa.degenerate)) return cores_apart();
+  if (gjk.upper > touch && (epa.upper < -touch || epa.degenerate)) {
+    cores_apart();
+    return result;
+  }
   const Vec3T<S>& n = epa.normal;
   if (!(std::abs(n.squaredNorm() - S(1)) <= S(1e-6))) {
     // EPA's face normals are products of four coordinates: beyond about 1e77 they overflow, and

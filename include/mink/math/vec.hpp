@@ -51,15 +51,21 @@ template <class S>
 /// 1e-154 and shorter: the root of the rounded square is off by up to 1e-3, and a normal
 /// v / |v| then is not unit) or overflows (1e154 and longer): Eigen's stableNorm() rescales first.
 template <class S>
-S length_of(const Vec3T<S>& v, S v_sq) {
+[[gnu::noinline]] S stable_length(const Vec3T<S>& v) {
+  return v.stableNorm();
+}
+/// Inlined, with Eigen's rescaling loop out of line (stable_length()): a box's bounding radius
+/// is taken on every query, and a call there cost two register spills on each side.
+template <class S>
+[[gnu::always_inline]] inline S length_of(const Vec3T<S>& v, S v_sq) {
   return v_sq >= std::numeric_limits<S>::min() && v_sq <= std::numeric_limits<S>::max()
              ? std::sqrt(v_sq)
-             : v.stableNorm();
+             : stable_length(v);
 }
 
 /// |v| at any magnitude.
 template <class S>
-S length_of(const Vec3T<S>& v) {
+[[gnu::always_inline]] inline S length_of(const Vec3T<S>& v) {
   return length_of(v, S(v.squaredNorm()));
 }
 
