@@ -72,19 +72,27 @@ namespace detail {
 /// gjk/distance.hpp for why callers map them first), and
 /// `normal`, the unit direction from on_a to on_b: `core_distance` is the distance of the cores
 /// (B's core minus A's along the normal), `inside` the sum of the radii plus the touching
-/// tolerance.
+/// tolerance. `origin` (optional): on_a and on_b are about it, not the world's origin; the points
+/// are moved out by the radii and then by `origin`, written once (a point written and then
+/// shifted in place is read back whole from its parts' stores, which stalls).
 template <class S>
 [[gnu::always_inline]] inline void contact_from_cores(const Vec3T<S>& on_a, const Vec3T<S>& on_b,
                                                       const Vec3T<S>& normal, S core_distance,
                                                       S radius_a, S radius_b, S inside,
-                                                      ContactResultT<S>& result) {
+                                                      ContactResultT<S>& result,
+                                                      const Vec3T<S>* origin = nullptr) {
   const S radius = radius_a + radius_b;
   result.intersect = core_distance <= inside;
   result.distance = result.intersect ? S(0) : core_distance - radius;
   result.depth = std::max(S(0), radius - core_distance);
   result.normal = normal;
-  result.point_a = on_a + radius_a * normal;
-  result.point_b = on_b - radius_b * normal;
+  if (origin) {
+    result.point_a = moved_along(on_a, radius_a, normal, *origin);
+    result.point_b = moved_along(on_b, -radius_b, normal, *origin);
+  } else {
+    result.point_a = moved_along(on_a, radius_a, normal);
+    result.point_b = moved_along(on_b, -radius_b, normal);
+  }
 }
 
 }  // namespace detail
@@ -116,9 +124,7 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     if (core_distance > touch) {
       // on_a, on_b are world points shifted to A's origin: shift them back.
       detail::contact_from_cores(on_a, on_b, normal, core_distance, radius_a, radius_b, inside,
-                                 result);
-      result.point_a += pose_a.translation;
-      result.point_b += pose_a.translation;
+                                 result, &pose_a.translation);
       result.status = result.intersect ? Status::Intersecting : Status::Separated;
       return result;
     }
