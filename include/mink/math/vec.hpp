@@ -39,7 +39,7 @@ constexpr S power_of_two(int k) {
 
 /// p + s d, coordinate by coordinate. As an Eigen expression assigned into a large function's
 /// result, GCC left Eigen's assignment loop out of line: a call and an expression object on the
-/// stack for each of a contact's two points (about 5 ns of a sphere-box contact).
+/// stack for each of a contact's two points (1.5 ns of a sphere-box contact).
 template <class S>
 [[gnu::always_inline]] inline Vec3T<S> moved_along(const Vec3T<S>& p, S s, const Vec3T<S>& d) {
   return Vec3T<S>(p.x() + s * d.x(), p.y() + s * d.y(), p.z() + s * d.z());
@@ -64,15 +64,16 @@ template <class S>
          a.z() * (b.x() * c.y() - b.y() * c.x());
 }
 
-/// |v| from its square `v_sq` (= v.squaredNorm()), also where that square underflows (vectors of
-/// 1e-154 and shorter: the root of the rounded square is off by up to 1e-3, and a normal
-/// v / |v| then is not unit) or overflows (1e154 and longer): Eigen's stableNorm() rescales first.
+/// Eigen's stableNorm(), out of line: the rare branch of length_of(), which is inlined (a box's
+/// bounding radius is taken on every query, and a call there cost register spills on both sides).
 template <class S>
 [[gnu::noinline]] S stable_length(const Vec3T<S>& v) {
   return v.stableNorm();
 }
-/// Inlined, with Eigen's rescaling loop out of line (stable_length()): a box's bounding radius
-/// is taken on every query, and a call there cost two register spills on each side.
+
+/// |v| from its square `v_sq` (= v.squaredNorm()), also where that square underflows (vectors of
+/// 1e-154 and shorter: the root of the rounded square is off by up to 1e-3, and a normal
+/// v / |v| then is not unit) or overflows (1e154 and longer): Eigen's stableNorm() rescales first.
 template <class S>
 [[gnu::always_inline]] inline S length_of(const Vec3T<S>& v, S v_sq) {
   return v_sq >= std::numeric_limits<S>::min() && v_sq <= std::numeric_limits<S>::max()
