@@ -70,16 +70,24 @@ namespace detail {
 /// world before the call, not in the result afterwards: a mapping in place reads the fields just
 /// written, and the packed load of a vector stored in parts stalls on store forwarding (6 ns a
 /// query on box contact). contact_from_cores() (epa/contact.hpp) is its contact twin.
+/// `origin` (optional) as in contact_from_cores(): on_a and on_b are about it, and the points are
+/// shifted to the world in the same expression.
 template <class S>
 [[gnu::always_inline]] inline void separated_from_cores(const Vec3T<S>& on_a, const Vec3T<S>& on_b,
                                                         const Vec3T<S>& normal, S core_distance,
                                                         S radius_a, S radius_b,
-                                                        DistanceResultT<S>& result) {
+                                                        DistanceResultT<S>& result,
+                                                        const Vec3T<S>* origin = nullptr) {
   result.status = Status::Separated;
   result.distance = std::max(S(0), core_distance - radius_a - radius_b);
   result.normal = normal;
-  result.point_a = on_a + radius_a * normal;
-  result.point_b = on_b - radius_b * normal;
+  if (origin) {
+    result.point_a = moved_along(on_a, radius_a, normal, *origin);
+    result.point_b = moved_along(on_b, -radius_b, normal, *origin);
+  } else {
+    result.point_a = moved_along(on_a, radius_a, normal);
+    result.point_b = moved_along(on_b, -radius_b, normal);
+  }
 }
 
 }  // namespace detail
@@ -112,9 +120,8 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       return result;
     }
     // on_a, on_b are world points shifted to A's origin: shift them back.
-    detail::separated_from_cores(on_a, on_b, normal, core_distance, radius_a, radius_b, result);
-    result.point_a += pose_a.translation;
-    result.point_b += pose_a.translation;
+    detail::separated_from_cores(on_a, on_b, normal, core_distance, radius_a, radius_b, result,
+                                 &pose_a.translation);
     return result;
   }
   if constexpr (detail::kPointSolid<A, B>) {
