@@ -18,6 +18,7 @@
 #include <type_traits>
 
 #include "mink/gjk/segment_cores.hpp"
+#include "mink/math/lanes.hpp"
 #include "mink/math/pose.hpp"
 #include "mink/query/box_box.hpp"
 #include "mink/shapes/cylinder.hpp"
@@ -206,25 +207,27 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
     if (!(std::max({std::abs(p.x()), std::abs(p.y()), std::abs(p.z())}) <= kLargest))
       return std::nullopt;
     const std::size_t n = c.scan_count();  // a multiple of 4: whole SIMD blocks, padding -inf
-#if defined(__AVX2__) || defined(__SSE2__)
+#if defined(__SSE2__)
     if constexpr (std::is_same_v<S, double>) {
       // The maximum in registers: an arg-max loop would carry a compare and a select from one
       // face to the next. Same operations, in the same order, as the scalar loop below.
-      const LaneVec px = lane_set1(p.x()), py = lane_set1(p.y()), pz = lane_set1(p.z());
-      LaneVec largest = lane_set1(-std::numeric_limits<double>::infinity());
-      const LaneVec stop = lane_set1(enough);
-      for (std::size_t f = 0; f < n; f += kLaneWidth) {
-        const LaneVec d = lane_sub(lane_add(lane_add(lane_mul(lane_load(c.nx.data() + f), px),
-                                                     lane_mul(lane_load(c.ny.data() + f), py)),
-                                            lane_mul(lane_load(c.nz.data() + f), pz)),
-                                   lane_load(c.offset.data() + f));
+      using Vec = Lanes<kBuildLaneWidth>;
+      Vec largest;
+      lanes_fill(largest, -std::numeric_limits<double>::infinity());
+      for (std::size_t f = 0; f < n; f += kBuildLaneWidth) {
+        Vec nx, ny, nz, offset;
+        lanes_load(nx, c.nx.data() + f);
+        lanes_load(ny, c.ny.data() + f);
+        lanes_load(nz, c.nz.data() + f);
+        lanes_load(offset, c.offset.data() + f);
+        const Vec d = ((nx * p.x() + ny * p.y()) + nz * p.z()) - offset;
         if (above)
-          lane_store(above + f, d);
-        else if (lane_any_greater(d, stop))
-          return lane_hmax(lane_max(largest, d));
-        largest = lane_max(largest, d);
+          lanes_store(above + f, d);
+        else if (lanes_any_greater(d, enough))
+          return lanes_max(largest > d ? largest : d);
+        largest = largest > d ? largest : d;
       }
-      return lane_hmax(largest);
+      return lanes_max(largest);
     }
 #endif
     S largest = -std::numeric_limits<S>::infinity();
@@ -235,24 +238,38 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
     }
     return largest;
   }
+#if defined(__SSE2__)
+  /// For each block of corners (padding included), `value(x, y, z)` of their coordinates' lanes
+  /// into `out`; returns the largest value or, with kSmallest, the smallest (the largest
+  /// negated), in registers to the end.
+  template <bool kSmallest, class Value>
+  static double scan_corners(const Core& c, double* out, Value value) {
+    using Vec = Lanes<kBuildLaneWidth>;
+    Vec largest;
+    lanes_fill(largest, -std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < c.corner_scan_count(); i += kBuildLaneWidth) {
+      Vec x, y, z;
+      lanes_load(x, c.cx.data() + i);
+      lanes_load(y, c.cy.data() + i);
+      lanes_load(z, c.cz.data() + i);
+      const Vec v = value(x, y, z);
+      lanes_store(out + i, v);
+      const Vec key = kSmallest ? Vec(0.0 - v) : v;
+      largest = largest > key ? largest : key;
+    }
+    return kSmallest ? -lanes_max(largest) : lanes_max(largest);
+  }
+#endif
   /// For each corner w (padding included), |p - w|^2 into `distance_sq`; returns the smallest.
   static S corner_distances(const Core& c, const Vec3T<S>& p, S* distance_sq) {
     const std::size_t n = c.corner_scan_count();
-#if defined(__AVX2__) || defined(__SSE2__)
+#if defined(__SSE2__)
     if constexpr (std::is_same_v<S, double>) {
-      // The smallest as the largest negated, in registers: the same lane helpers as the planes.
-      const LaneVec px = lane_set1(p.x()), py = lane_set1(p.y()), pz = lane_set1(p.z());
-      const LaneVec zero = lane_set1(0.0);
-      LaneVec largest = lane_set1(-std::numeric_limits<double>::infinity());
-      for (std::size_t i = 0; i < n; i += kLaneWidth) {
-        const LaneVec dx = lane_sub(px, lane_load(c.cx.data() + i));
-        const LaneVec dy = lane_sub(py, lane_load(c.cy.data() + i));
-        const LaneVec dz = lane_sub(pz, lane_load(c.cz.data() + i));
-        const LaneVec sq = lane_add(lane_add(lane_mul(dx, dx), lane_mul(dy, dy)), lane_mul(dz, dz));
-        lane_store(distance_sq + i, sq);
-        largest = lane_max(largest, lane_sub(zero, sq));
-      }
-      return -lane_hmax(largest);
+      using Vec = Lanes<kBuildLaneWidth>;
+      return scan_corners<true>(c, distance_sq, [&](const Vec& x, const Vec& y, const Vec& z) {
+        const Vec dx = p.x() - x, dy = p.y() - y, dz = p.z() - z;
+        return Vec((dx * dx + dy * dy) + dz * dz);
+      });
     }
 #endif
     S smallest = std::numeric_limits<S>::infinity();
@@ -265,18 +282,12 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
   /// For each corner w (padding included), d . w into `dots`; returns the largest.
   static S corner_dots(const Core& c, const Vec3T<S>& d, S* dots) {
     const std::size_t n = c.corner_scan_count();
-#if defined(__AVX2__) || defined(__SSE2__)
+#if defined(__SSE2__)
     if constexpr (std::is_same_v<S, double>) {
-      const LaneVec dx = lane_set1(d.x()), dy = lane_set1(d.y()), dz = lane_set1(d.z());
-      LaneVec largest = lane_set1(-std::numeric_limits<double>::infinity());
-      for (std::size_t i = 0; i < n; i += kLaneWidth) {
-        const LaneVec dot = lane_add(lane_add(lane_mul(lane_load(c.cx.data() + i), dx),
-                                              lane_mul(lane_load(c.cy.data() + i), dy)),
-                                     lane_mul(lane_load(c.cz.data() + i), dz));
-        lane_store(dots + i, dot);
-        largest = lane_max(largest, dot);
-      }
-      return lane_hmax(largest);
+      using Vec = Lanes<kBuildLaneWidth>;
+      return scan_corners<false>(c, dots, [&](const Vec& x, const Vec& y, const Vec& z) {
+        return Vec((x * d.x() + y * d.y()) + z * d.z());
+      });
     }
 #endif
     S largest = -std::numeric_limits<S>::infinity();

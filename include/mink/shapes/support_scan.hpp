@@ -2,11 +2,13 @@
 /// The brute-force support of a point set: the index of the point with the largest dot product
 /// with a direction, over coordinates stored as three arrays (structure of arrays).
 ///
-/// This is the one hand-vectorised loop of mink. Compilers do not vectorise an arg-max (the index
-/// has to follow the maximum), so the double version takes the maximum of blocks of points with
-/// SIMD and finds the index only in the winning block: SSE2 on any x86-64, AVX2 where the build
-/// enables it (-mavx2 or -march=native; the MINK_NATIVE CMake option). The plain twin
-/// `support_index_scalar` defines the result, and the tests compare the SIMD paths against it.
+/// Compilers do not vectorise an arg-max (the index has to follow the maximum), so the double
+/// version takes the maximum of blocks of points with SIMD (math/lanes.hpp) and finds the index
+/// only in the winning block. Up to 8 points take an always-inlined SSE2 path. More take AVX2
+/// where the CPU has it, checked once at start-up, even in builds for plain x86-64, and SSE2
+/// otherwise; builds with -mavx2 or -march=native (the MINK_NATIVE CMake option) take AVX2
+/// without the check. The plain twin `support_index_scalar` defines the result, and the tests
+/// compare every SIMD path against it.
 ///
 /// Result: the lowest index among the points farthest along d. With a NaN direction, 0.
 #pragma once
@@ -14,12 +16,21 @@
 #include <bit>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
 
-#if defined(__AVX2__)
-#include <immintrin.h>
-#elif defined(__SSE2__)
+#if defined(__SSE2__)
 #include <emmintrin.h>
+#endif
+
+#include "mink/math/lanes.hpp"
+
+// Builds for x86-64 without -mavx2 still get the AVX2 scan where the CPU has it: a function with
+// its own target attribute, chosen at run time (GCC and Clang). No FMA in that target: the same
+// rounding as the scalar twin.
+#if defined(__SSE2__) && !defined(__AVX2__) && defined(__x86_64__) && defined(__GNUC__)
+#define MINK_AVX2_DISPATCH 1
+#define MINK_AVX2_TARGET [[gnu::target("avx2")]]
+#else
+#define MINK_AVX2_TARGET
 #endif
 
 namespace mink::detail {
@@ -44,70 +55,7 @@ std::size_t support_index(const S* xs, const S* ys, const S* zs, std::size_t n, 
   return support_index_scalar(xs, ys, zs, n, dx, dy, dz);
 }
 
-#if defined(__AVX2__) || defined(__SSE2__)
-#if defined(__AVX2__)
-using LaneVec = __m256d;
-constexpr int kLaneWidth = 4;
-inline LaneVec lane_set1(double x) {
-  return _mm256_set1_pd(x);
-}
-inline LaneVec lane_load(const double* p) {
-  return _mm256_loadu_pd(p);
-}
-inline LaneVec lane_add(LaneVec a, LaneVec b) {
-  return _mm256_add_pd(a, b);
-}
-inline LaneVec lane_sub(LaneVec a, LaneVec b) {
-  return _mm256_sub_pd(a, b);
-}
-inline LaneVec lane_mul(LaneVec a, LaneVec b) {
-  return _mm256_mul_pd(a, b);
-}
-inline LaneVec lane_max(LaneVec a, LaneVec b) {
-  return _mm256_max_pd(a, b);
-}
-inline double lane_hmax(LaneVec v) {
-  const __m128d m = _mm_max_pd(_mm256_castpd256_pd128(v), _mm256_extractf128_pd(v, 1));
-  return _mm_cvtsd_f64(_mm_max_sd(m, _mm_unpackhi_pd(m, m)));
-}
-inline void lane_store(double* p, LaneVec v) {
-  _mm256_storeu_pd(p, v);
-}
-inline bool lane_any_greater(LaneVec a, LaneVec b) {
-  return _mm256_movemask_pd(_mm256_cmp_pd(a, b, _CMP_GT_OQ)) != 0;
-}
-#else
-using LaneVec = __m128d;
-constexpr int kLaneWidth = 2;
-inline LaneVec lane_set1(double x) {
-  return _mm_set1_pd(x);
-}
-inline LaneVec lane_load(const double* p) {
-  return _mm_loadu_pd(p);
-}
-inline LaneVec lane_add(LaneVec a, LaneVec b) {
-  return _mm_add_pd(a, b);
-}
-inline LaneVec lane_sub(LaneVec a, LaneVec b) {
-  return _mm_sub_pd(a, b);
-}
-inline LaneVec lane_mul(LaneVec a, LaneVec b) {
-  return _mm_mul_pd(a, b);
-}
-inline LaneVec lane_max(LaneVec a, LaneVec b) {
-  return _mm_max_pd(a, b);
-}
-inline double lane_hmax(LaneVec v) {
-  return _mm_cvtsd_f64(_mm_max_sd(v, _mm_unpackhi_pd(v, v)));
-}
-inline void lane_store(double* p, LaneVec v) {
-  _mm_storeu_pd(p, v);
-}
-inline bool lane_any_greater(LaneVec a, LaneVec b) {
-  return _mm_movemask_pd(_mm_cmpgt_pd(a, b)) != 0;
-}
-#endif
-
+#if defined(__SSE2__)
 /// At most 8 points (SSE2, also under AVX2): the dot products in pairs, their maximum by a tree
 /// of vector maxima, and the first index that reaches it from the lanes' equality masks, with no
 /// branch on the data. A NaN dot product (a NaN direction, or inf times a 0 coordinate) counts as
@@ -139,62 +87,48 @@ inline bool lane_any_greater(LaneVec a, LaneVec b) {
   return mask == 0 ? 0 : std::size_t(std::countr_zero(mask));  // 0: no points
 }
 
-/// More than 8 points: blocks of SIMD dot products (below). Out of line, since the inlined path
-/// is the one for small sets; a template (of double only) so that the header may hold it.
-template <class S>
-[[gnu::noinline]] std::size_t support_index_many(const S* xs, const S* ys, const S* zs,
-                                                 std::size_t n, S dx, S dy, S dz);
-
-/// Always inlined, the 8-point path included: for the small hulls of a scene the support call is
-/// the body of every GJK and EPA iteration, and the calls into a scan of 8 points (saving and
-/// restoring registers on both sides) cost about as many instructions as the scan itself.
-template <>
-[[gnu::always_inline]] inline std::size_t support_index<double>(const double* xs, const double* ys,
-                                                                const double* zs, std::size_t n,
-                                                                double dx, double dy, double dz) {
-  if (n <= 8) return support_index_few(xs, ys, zs, n, dx, dy, dz);
-  return support_index_many(xs, ys, zs, n, dx, dy, dz);
-}
-
-template <class S>
-std::size_t support_index_many(const S* xs, const S* ys, const S* zs, std::size_t n, S dx, S dy,
-                               S dz) {
-  static_assert(std::is_same_v<S, double>, "the SIMD scan is for double");
+/// More than 8 points: blocks of 4 W dot products. The dot products and each block's maximum are
+/// pure SIMD with no loop-carried dependency; only a block that beats the best so far (about
+/// log n of them for a random direction) costs a branch, which keeps that block's dot products.
+/// The winner's index is found at the end among those: recomputing the winning block instead
+/// would load from an address known only after the last block. Always inlined into the
+/// out-of-line entry points below, which give it its instruction set.
+template <int W>
+[[gnu::always_inline]] inline std::size_t support_index_blocks(const double* xs, const double* ys,
+                                                               const double* zs, std::size_t n,
+                                                               double dx, double dy, double dz) {
+  using Vec = Lanes<W>;
   constexpr int kVectors = 4;
-  constexpr std::size_t kBlock = kVectors * kLaneWidth;
-  if (n < kBlock) return support_index_scalar(xs, ys, zs, n, dx, dy, dz);
-  // Blocks of kBlock points: the dot products and the block's maximum are pure SIMD with no
-  // loop-carried dependency; only a block that beats the best so far (about log n of them for a
-  // random direction) costs a branch. The winner's index is found at the end by recomputing its
-  // block with the same instructions, so the equality test compares bit-identical values.
-  const LaneVec vx = lane_set1(dx), vy = lane_set1(dy), vz = lane_set1(dz);
-  auto block_dots = [&](std::size_t i, LaneVec* dots) {
-    for (int c = 0; c < kVectors; ++c) {
-      const std::size_t j = i + std::size_t(c * kLaneWidth);
-      // No fused multiply-add: the same rounding as the scalar twin and the tail.
-      dots[c] = lane_add(lane_add(lane_mul(lane_load(xs + j), vx), lane_mul(lane_load(ys + j), vy)),
-                         lane_mul(lane_load(zs + j), vz));
-    }
-  };
+  constexpr std::size_t kBlock = kVectors * W;
   double best = -std::numeric_limits<double>::infinity();
   std::size_t best_block = 0;
+  Vec best_dots[kVectors] = {};  // the best block's dot products, for the winner's index
   std::size_t i = 0;
   for (; i + kBlock <= n; i += kBlock) {
-    LaneVec dots[kVectors];
-    block_dots(i, dots);
-    const double block_max =
-        lane_hmax(lane_max(lane_max(dots[0], dots[1]), lane_max(dots[2], dots[3])));
+    Vec dots[kVectors];
+    for (int c = 0; c < kVectors; ++c) {
+      const std::size_t j = i + std::size_t(c * W);
+      Vec x, y, z;
+      lanes_load(x, xs + j);
+      lanes_load(y, ys + j);
+      lanes_load(z, zs + j);
+      // No fused multiply-add: the same rounding as the scalar twin and the tail.
+      dots[c] = (x * dx + y * dy) + z * dz;
+    }
+    const Vec low = dots[0] > dots[1] ? dots[0] : dots[1];
+    const Vec high = dots[2] > dots[3] ? dots[2] : dots[3];
+    const Vec block = low > high ? low : high;
+    const double block_max = lanes_max(block);
     if (block_max > best) {
       best = block_max;
       best_block = i;
+      for (int c = 0; c < kVectors; ++c) best_dots[c] = dots[c];
     }
   }
   std::size_t best_i = 0;
   if (best > -std::numeric_limits<double>::infinity()) {
-    LaneVec dots[kVectors];
-    block_dots(best_block, dots);
     double values[kBlock];
-    for (int c = 0; c < kVectors; ++c) lane_store(values + c * kLaneWidth, dots[c]);
+    for (int c = 0; c < kVectors; ++c) lanes_store(values + c * W, best_dots[c]);
     for (std::size_t k = 0; k < kBlock; ++k)
       if (values[k] == best) {
         best_i = best_block + k;
@@ -209,6 +143,53 @@ std::size_t support_index_many(const S* xs, const S* ys, const S* zs, std::size_
     }
   }
   return best_i;
+}
+
+/// More than 8 points with SSE2 lanes. Out of line, since the inlined path is the one for small
+/// sets.
+[[gnu::noinline]] inline std::size_t support_index_many_sse2(const double* xs, const double* ys,
+                                                             const double* zs, std::size_t n,
+                                                             double dx, double dy, double dz) {
+  return support_index_blocks<2>(xs, ys, zs, n, dx, dy, dz);
+}
+
+#if defined(__AVX2__) || defined(MINK_AVX2_DISPATCH)
+/// More than 8 points with AVX2 lanes (blocks of 16; fewer points take the SSE2 blocks of 8).
+[[gnu::noinline]] MINK_AVX2_TARGET inline std::size_t support_index_many_avx2(
+    const double* xs, const double* ys, const double* zs, std::size_t n, double dx, double dy,
+    double dz) {
+  if (n < 16) return support_index_blocks<2>(xs, ys, zs, n, dx, dy, dz);
+  return support_index_blocks<4>(xs, ys, zs, n, dx, dy, dz);
+}
+#endif
+
+#if defined(MINK_AVX2_DISPATCH)
+/// Whether this CPU (and its operating system, which must save the wide registers) runs AVX2:
+/// asked once at start-up. Read before its initialiser has run (from another static initialiser),
+/// it is false, which only chooses the SSE2 scan: both give the same answer.
+inline const bool cpu_has_avx2 = [] {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") != 0;
+}();
+#endif
+
+/// Always inlined, the 8-point path included: for the small hulls of a scene the support call is
+/// the body of every GJK and EPA iteration, and the calls into a scan of 8 points (saving and
+/// restoring registers on both sides) cost about as many instructions as the scan itself. Larger
+/// sets take the widest scan this CPU runs.
+template <>
+[[gnu::always_inline]] inline std::size_t support_index<double>(const double* xs, const double* ys,
+                                                                const double* zs, std::size_t n,
+                                                                double dx, double dy, double dz) {
+  if (n <= 8) return support_index_few(xs, ys, zs, n, dx, dy, dz);
+#if defined(__AVX2__)
+  return support_index_many_avx2(xs, ys, zs, n, dx, dy, dz);
+#else
+#if defined(MINK_AVX2_DISPATCH)
+  if (cpu_has_avx2) return support_index_many_avx2(xs, ys, zs, n, dx, dy, dz);
+#endif
+  return support_index_many_sse2(xs, ys, zs, n, dx, dy, dz);
+#endif
 }
 #endif
 

@@ -1,7 +1,9 @@
 // The SIMD support scan against its scalar twin, which defines the answer (lowest index among the
-// farthest points), including ties, tails shorter than a block and NaN directions.
+// farthest points), including ties, tails shorter than a block and NaN directions: the path the
+// build chooses, and each instruction set's scan called directly (AVX2 where this CPU has it).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -16,43 +18,97 @@ struct Soa {
   std::size_t index(const Vec3& d) const {
     return detail::support_index(x.data(), y.data(), z.data(), x.size(), d.x(), d.y(), d.z());
   }
+#if defined(__SSE2__)
+  std::size_t sse2(const Vec3& d) const {
+    return detail::support_index_many_sse2(x.data(), y.data(), z.data(), x.size(), d.x(), d.y(),
+                                           d.z());
+  }
+#endif
   std::size_t scalar(const Vec3& d) const {
     return detail::support_index_scalar(x.data(), y.data(), z.data(), x.size(), d.x(), d.y(),
                                         d.z());
   }
 };
 
+/// Whether this machine can run the AVX2 scan (where it cannot, only the others are checked).
+bool can_run_avx2() {
+#if defined(__AVX2__)
+  return true;
+#elif defined(MINK_AVX2_DISPATCH)
+  return detail::cpu_has_avx2;
+#else
+  return false;
+#endif
+}
+
+/// Every scan against the scalar twin: the one the build chooses and, for more than 8 points,
+/// SSE2 and AVX2 (where it runs) called directly.
+void expect_every_scan_matches(const Soa& s, const Vec3& d, const char* what) {
+  const std::size_t want = s.scalar(d);
+  EXPECT_EQ(s.index(d), want) << what << ", " << s.x.size() << " points";
+  if (s.x.size() <= 8) return;
+#if defined(__SSE2__)
+  EXPECT_EQ(s.sse2(d), want) << what << ", SSE2, " << s.x.size() << " points";
+#endif
+#if defined(__AVX2__) || defined(MINK_AVX2_DISPATCH)
+  if (can_run_avx2()) {
+    EXPECT_EQ(detail::support_index_many_avx2(s.x.data(), s.y.data(), s.z.data(), s.x.size(), d.x(),
+                                              d.y(), d.z()),
+              want)
+        << what << ", AVX2, " << s.x.size() << " points";
+  }
+#endif
+}
+
+TEST(SupportScan, TiesGoToTheLowestIndex) {
+  // A lattice with many equal dot products, 9 to 70 points: the first of the equals wins
+  // whatever block or lane it falls in, on every path.
+  for (std::size_t n = 9; n <= 70; ++n) {
+    Soa s;
+    for (std::size_t i = 0; i < n; ++i) {
+      s.x.push_back(double(i % 3));
+      s.y.push_back(double(i % 5));
+      s.z.push_back(double(i % 2));
+    }
+    for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 1, 0),
+                          Vec3(-1, 0, 0), Vec3(0, -1, -1), Vec3(1, 1, 1)})
+      expect_every_scan_matches(s, d, "lattice");
+    EXPECT_EQ(s.index(Vec3(0, 0, 0)), 0u);  // every point ties: index 0
+  }
+}
 TEST(SupportScan, MatchesScalarTwinOnRandomClouds) {
+  // 1 to 100 points: the inlined path up to 8, then AVX2 blocks of 16 and SSE2 blocks of 8 with
+  // every tail length. Random directions, then the first 7 points copied to the end and into the
+  // middle (the farthest point now in two blocks: the first copy must win), then a zero and an
+  // axis direction (many equal dot products).
   const unsigned seed = 20261122;
   SCOPED_TRACE(seed);
+  if (!can_run_avx2()) std::printf("note: this CPU has no AVX2; its scan is not checked\n");
   std::mt19937 rng(seed);
   std::normal_distribution<double> g;
-  for (std::size_t n = 1; n <= 70; ++n) {
+  for (std::size_t n = 1; n <= 100; ++n) {
     Soa s;
     for (std::size_t i = 0; i < n; ++i) {
       s.x.push_back(g(rng));
       s.y.push_back(g(rng));
       s.z.push_back(g(rng));
     }
-    for (int k = 0; k < 200; ++k) {
-      const Vec3 d(g(rng), g(rng), g(rng));
-      ASSERT_EQ(s.index(d), s.scalar(d)) << "n = " << n;
+    for (int k = 0; k < 200; ++k)
+      expect_every_scan_matches(s, Vec3(g(rng), g(rng), g(rng)), "random");
+    for (std::size_t i = 0; i < 7 && i < n; ++i) {
+      const std::size_t middle = n / 2 + i % ((n + 1) / 2);
+      s.x.push_back(s.x[i]);
+      s.y.push_back(s.y[i]);
+      s.z.push_back(s.z[i]);
+      s.x[middle] = s.x[i];
+      s.y[middle] = s.y[i];
+      s.z[middle] = s.z[i];
     }
+    for (int k = 0; k < 100; ++k)
+      expect_every_scan_matches(s, Vec3(g(rng), g(rng), g(rng)), "repeated points");
+    expect_every_scan_matches(s, Vec3(0, 0, 0), "zero direction");
+    expect_every_scan_matches(s, Vec3(1, 0, 0), "axis direction");
   }
-}
-
-TEST(SupportScan, TiesGoToTheLowestIndex) {
-  // A lattice of points with many equal dot products: the first of them must win, whatever block
-  // or lane it falls in.
-  Soa s;
-  for (int i = 0; i < 37; ++i) {
-    s.x.push_back(double(i % 3));
-    s.y.push_back(double(i % 2));
-    s.z.push_back(0.0);
-  }
-  for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(0, 0, 1), Vec3(-1, 0, 0)})
-    EXPECT_EQ(s.index(d), s.scalar(d));
-  EXPECT_EQ(s.index(Vec3(0, 0, 1)), 0u);  // every point ties: index 0
 }
 
 TEST(SupportScan, FewPointsTiesGoToTheLowestIndex) {
@@ -106,6 +162,16 @@ TEST(SupportScan, NanDirectionGivesAValidIndex) {
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_LT(s.index(Vec3(nan, 0, 0)), s.x.size());
+#if defined(__SSE2__)
+  EXPECT_LT(s.sse2(Vec3(nan, 0, 0)), s.x.size());
+#endif
+#if defined(__AVX2__) || defined(MINK_AVX2_DISPATCH)
+  if (can_run_avx2()) {
+    EXPECT_LT(detail::support_index_many_avx2(s.x.data(), s.y.data(), s.z.data(), s.x.size(), nan,
+                                              0.0, 0.0),
+              s.x.size());
+  }
+#endif
 }
 
 }  // namespace
