@@ -26,13 +26,15 @@ template <int W>
 struct LanesOf;
 template <>
 struct LanesOf<2> {
-  using type = double __attribute__((vector_size(16)));
-  using unaligned = double __attribute__((vector_size(16), aligned(8), may_alias));
+  typedef double type __attribute__((vector_size(16)));
+  // Typedefs, not using-aliases: Clang lowers a vector's alignment only on a typedef (through an
+  // alias the unaligned loads kept 32-byte alignment, which UBSan reports).
+  typedef double unaligned __attribute__((vector_size(16), aligned(8), may_alias));
 };
 template <>
 struct LanesOf<4> {
-  using type = double __attribute__((vector_size(32)));
-  using unaligned = double __attribute__((vector_size(32), aligned(8), may_alias));
+  typedef double type __attribute__((vector_size(32)));
+  typedef double unaligned __attribute__((vector_size(32), aligned(8), may_alias));
 };
 
 /// W doubles in one register (W = 2: SSE2, W = 4: AVX).
