@@ -86,13 +86,7 @@ template <class S>
   result.distance = result.intersect ? S(0) : core_distance - radius;
   result.depth = std::max(S(0), radius - core_distance);
   result.normal = normal;
-  if (origin) {
-    result.point_a = moved_along(on_a, radius_a, normal, *origin);
-    result.point_b = moved_along(on_b, -radius_b, normal, *origin);
-  } else {
-    result.point_a = moved_along(on_a, radius_a, normal);
-    result.point_b = moved_along(on_b, -radius_b, normal);
-  }
+  surface_points(on_a, on_b, normal, radius_a, radius_b, origin, result.point_a, result.point_b);
 }
 
 }  // namespace detail

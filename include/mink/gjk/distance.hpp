@@ -63,6 +63,24 @@ using DistanceResult = DistanceResultT<double>;
 
 namespace detail {
 
+/// The shapes' points from their cores' closest points on_a and on_b: pushed out by the radii
+/// along `normal` (from A to B) and, when `origin` is given, shifted from it to the world in the
+/// same expression. Two forms of moved_along() rather than a zero origin: adding a zero origin
+/// would turn a -0 coordinate into +0.
+template <class S>
+[[gnu::always_inline]] inline void surface_points(const Vec3T<S>& on_a, const Vec3T<S>& on_b,
+                                                  const Vec3T<S>& normal, S radius_a, S radius_b,
+                                                  const Vec3T<S>* origin, Vec3T<S>& point_a,
+                                                  Vec3T<S>& point_b) {
+  if (origin) {
+    point_a = moved_along(on_a, radius_a, normal, *origin);
+    point_b = moved_along(on_b, -radius_b, normal, *origin);
+  } else {
+    point_a = moved_along(on_a, radius_a, normal);
+    point_b = moved_along(on_b, -radius_b, normal);
+  }
+}
+
 /// Fills the separated answer of `result` from the closest points of the cores, on_a and on_b, in
 /// the world frame (or shifted from it: the caller shifts the points back), `normal`, the unit
 /// direction from on_a to on_b, and `core_distance`, the cores' distance: the shapes' closest
@@ -81,13 +99,7 @@ template <class S>
   result.status = Status::Separated;
   result.distance = std::max(S(0), core_distance - radius_a - radius_b);
   result.normal = normal;
-  if (origin) {
-    result.point_a = moved_along(on_a, radius_a, normal, *origin);
-    result.point_b = moved_along(on_b, -radius_b, normal, *origin);
-  } else {
-    result.point_a = moved_along(on_a, radius_a, normal);
-    result.point_b = moved_along(on_b, -radius_b, normal);
-  }
+  surface_points(on_a, on_b, normal, radius_a, radius_b, origin, result.point_a, result.point_b);
 }
 
 }  // namespace detail

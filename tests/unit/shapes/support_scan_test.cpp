@@ -76,6 +76,7 @@ TEST(SupportScan, TiesGoToTheLowestIndex) {
     EXPECT_EQ(s.index(Vec3(0, 0, 0)), 0u);  // every point ties: index 0
   }
 }
+
 TEST(SupportScan, MatchesScalarTwinOnRandomClouds) {
   // 1 to 100 points: the inlined path up to 8, then AVX2 blocks of 16 and SSE2 blocks of 8 with
   // every tail length. Random directions, then the first 7 points copied to the end and into the
