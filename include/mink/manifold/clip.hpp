@@ -161,6 +161,37 @@ template <int kFixed, class S>
   return 4;
 }
 
+/// Whether the general steps (reduce_points_to_four()) would keep all of the four points `p`: they
+/// are in convex position, in cyclic order (as clipping a face by a convex face leaves them), and
+/// each lies more than `min_length` from the line through any two others. Then the triangle of any
+/// three has twice the area min_length times its longest side or more, which is what those steps
+/// ask of their third and fourth points (a box's face on a face, the common resting contact,
+/// spared their passes).
+template <class S>
+[[gnu::always_inline]] inline bool keeps_whole_quad(const PlanarPoint<S>* p, S min_length) {
+  // The turns (cross products of consecutive sides) of the closed polygon p0 p1 p2 p3: of one
+  // sign exactly when it is convex and simple; with four points, the four consecutive triples are
+  // all the triples.
+  S turn[4];
+  S longest_sq = S(0);  // the longest side or diagonal bounds every side of every triangle
+  for (int i = 0; i < 4; ++i) {
+    const PlanarPoint<S>&o = p[i], &q = p[(i + 1) & 3], &r = p[(i + 2) & 3];
+    const S ax = q.x - o.x, ay = q.y - o.y, bx = r.x - q.x, by = r.y - q.y;
+    turn[i] = ax * by - ay * bx;
+    longest_sq = std::max(longest_sq, ax * ax + ay * ay);
+    if (i < 2)
+      longest_sq = std::max(longest_sq, (r.x - o.x) * (r.x - o.x) + (r.y - o.y) * (r.y - o.y));
+  }
+  const S floor_sq = min_length * min_length * longest_sq;
+  bool positive = true, negative = true, wide = true;
+  for (int i = 0; i < 4; ++i) {
+    positive &= turn[i] > S(0);
+    negative &= turn[i] < S(0);
+    wide &= turn[i] * turn[i] > floor_sq;
+  }
+  return (positive || negative) && wide;
+}
+
 /// Indices of at most four of the `count` points (seen along the normal, with depths) that keep
 /// the deepest point and as much of the contact area as possible: the deepest point, the point
 /// farthest from it, the point making the largest triangle with those two, and the point that
@@ -178,7 +209,17 @@ int reduce_to_four(const PlanarPoint<S>* points, int count, S min_length, int* k
   // Two points (an edge on a face) and four (a box's face on a face) are the common cases of
   // resting contact.
   if (count == 2) return reduce_points_to_four<2>(points, count, min_length, keep);
-  if (count == 4) return reduce_points_to_four<4>(points, count, min_length, keep);
+  if (count == 4) {
+    if (keeps_whole_quad(points, min_length)) {
+      // All four, the deepest first (as the steps choose it) and the rest in cyclic order.
+      const int deepest = first_near_max<4>(4, -std::numeric_limits<S>::infinity(), min_length,
+                                            [&](int i) { return points[i].depth; });
+      const int first = deepest < 0 ? 0 : deepest;
+      for (int i = 0; i < 4; ++i) keep[i] = (first + i) & 3;
+      return 4;
+    }
+    return reduce_points_to_four<4>(points, count, min_length, keep);
+  }
   return reduce_points_to_four<0>(points, count, min_length, keep);
 }
 

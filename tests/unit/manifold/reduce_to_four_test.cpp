@@ -18,12 +18,19 @@ namespace {
 
 using Point = detail::PlanarPoint<double>;
 
-/// The kept indices of reduce_to_four() and of the steps with a run-time count.
+/// The kept indices of reduce_to_four() and of the steps with a run-time count: the same, slot by
+/// slot, except that four points kept whole (keeps_whole_quad()) come in cyclic order after the
+/// deepest, so only the deepest and the set are compared there.
 void expect_same_as_general(const Point* points, int count, double min_length, int k) {
   int fast[4] = {-1, -1, -1, -1}, general[4] = {-1, -1, -1, -1};
   const int kept = detail::reduce_to_four(points, count, min_length, fast);
   const int kept_general = detail::reduce_points_to_four<0>(points, count, min_length, general);
   ASSERT_EQ(kept, kept_general) << "case " << k << ", " << count << " points";
+  if (count == 4 && detail::keeps_whole_quad(points, min_length)) {
+    EXPECT_EQ(fast[0], general[0]) << "case " << k;
+    EXPECT_EQ(std::set<int>(fast, fast + 4), std::set<int>(general, general + 4)) << "case " << k;
+    return;
+  }
   for (int i = 0; i < kept; ++i) EXPECT_EQ(fast[i], general[i]) << "case " << k << ", slot " << i;
 }
 
@@ -35,7 +42,7 @@ TEST(ReduceToFour, FixedCountsEqualTheRunTimeSteps) {
   for (int k = 0; k < 20000; ++k) {
     const int count = k % 2 == 0 ? 2 : 4;
     Point p[4];
-    const int shape = (k / 2) % 6;
+    const int shape = (k / 2) % 8;
     for (int i = 0; i < count; ++i) p[i] = {u(rng), u(rng), u(rng)};
     if (shape == 1) {
       // Depths equal, or apart by about min_length: the deepest is a near tie.
@@ -60,6 +67,22 @@ TEST(ReduceToFour, FixedCountsEqualTheRunTimeSteps) {
     } else if (shape == 5) {
       // Every point the same.
       for (int i = 1; i < count; ++i) p[i] = p[0];
+    } else if (shape == 6 && count == 4) {
+      // A convex quadrilateral in cyclic order, one corner 0.2 to 5 min_length off the line of its
+      // neighbours, on either side: where keeping all four starts or stops.
+      const double off = (k % 4 == 1 ? 1 : -1) * min_length * std::exp(1.6 * u(rng));
+      const double depth = u(rng);
+      const Point corners[4] = {
+          {0.9, 0, depth}, {0, 0.7, depth}, {-0.8, 0, depth}, {0, off, depth}};
+      const int start = int(std::abs(u(rng)) * 4) & 3;
+      for (int i = 0; i < 4; ++i) p[i] = corners[(start + i) & 3];
+    } else if (shape == 7 && count == 4) {
+      // Convex corners out of cyclic order (a crossed quadrilateral) or one inside the others'
+      // triangle: the general steps decide.
+      const Point convex[4] = {{1, 0, u(rng)}, {0, 1, u(rng)}, {-1, 0, u(rng)}, {0, -1, u(rng)}};
+      const Point crossed[4] = {convex[0], convex[2], convex[1], convex[3]};
+      const Point inside[4] = {convex[0], convex[1], {0.1, 0.2, u(rng)}, convex[2]};
+      std::copy(k % 4 == 1 ? crossed : inside, (k % 4 == 1 ? crossed : inside) + 4, p);
     }
     expect_same_as_general(p, count, min_length, k);
     ++compared;
