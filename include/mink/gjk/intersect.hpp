@@ -74,8 +74,10 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   const S reach = radius + tolerances.relative * size;  // core distances that count as touching
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form, no iteration.
+    detail::CoreSegment<S> p, q;
     Vec3T<S> on_a, on_b;
-    detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b);
+    S u, v;
+    detail::closest_core_points_shifted(a, pose_a, b, pose_b, p, q, on_a, on_b, u, v);
     detail::intersect_from_core_gap(Vec3T<S>(on_b - on_a), reach, result);
     return result;
   }

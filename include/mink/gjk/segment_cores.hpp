@@ -211,9 +211,23 @@ void closest_points_of_segments(const Vec3T<S>& p0, const Vec3T<S>& p1, const Ve
                              closest_q);
 }
 
-/// Closest points of the cores of a (at pose_a) and b (at pose_b), both points or segments, in
-/// the world frame shifted to A's origin (which keeps far-away pairs precise).
-/// Returns |on_b - on_a|; `unit` (optional) receives the direction from on_a to on_b when they
+/// The cores of a (at pose_a) and b (at pose_b), both points or segments, in the world frame
+/// shifted to A's origin (which keeps far-away pairs precise), as p and q, and their closest
+/// points on_a = p.centre + u p.half and on_b = q.centre + v q.half. Always inlined: intersect()
+/// needs no more than this, and out of line the points would come back through memory.
+template <class A, class B>
+[[gnu::always_inline]] inline void closest_core_points_shifted(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b, CoreSegment<typename A::Scalar>& p,
+    CoreSegment<typename A::Scalar>& q, Vec3T<typename A::Scalar>& on_a,
+    Vec3T<typename A::Scalar>& on_b, typename A::Scalar& u, typename A::Scalar& v) {
+  p = SegmentCore<A>::world(a, pose_a, pose_a.translation);
+  q = SegmentCore<B>::world(b, pose_b, pose_a.translation);
+  closest_points_of_segments(p, q, on_a, on_b, &u, &v);
+}
+
+/// closest_core_points_shifted() and their distance: returns |on_b - on_a|; `unit` (optional)
+/// receives the direction from on_a to on_b when they
 /// differ (else it is left as it was): the plain quotient while the gap is more than 1e-3 of the
 /// segments' size and distance from A's origin (its rounding then tilts it by less than 3e-13
 /// rad), segment_gap_direction()'s when the cores nearly meet.
@@ -224,10 +238,9 @@ typename A::Scalar closest_core_points(const A& a, const PoseT<typename A::Scala
                                        Vec3T<typename A::Scalar>& on_b,
                                        Vec3T<typename A::Scalar>* unit = nullptr) {
   using S = typename A::Scalar;
-  const CoreSegment<S> p = SegmentCore<A>::world(a, pose_a, pose_a.translation);
-  const CoreSegment<S> q = SegmentCore<B>::world(b, pose_b, pose_a.translation);
+  CoreSegment<S> p, q;
   S u = S(0), v = S(0);
-  closest_points_of_segments(p, q, on_a, on_b, &u, &v);
+  closest_core_points_shifted(a, pose_a, b, pose_b, p, q, on_a, on_b, u, v);
   const Vec3T<S> gap = on_b - on_a;
   const S gap_sq = gap.squaredNorm();
   // length_of() and unit_of() with one range test on the hot path: a square in the normal range
