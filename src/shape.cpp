@@ -58,7 +58,13 @@ Expected<Shape> Shape::cone(double radius, double half_height) {
 }
 
 Expected<Shape> Shape::ellipsoid(const Vec3& radii) {
-  return from_core(Ellipsoid{radii}, 0);
+  // Three equal radii make a sphere: a point core and a radius, so that queries take the exact
+  // sphere paths. On its curved surface, EPA ran into its cap on near-concentric pairs (a sphere
+  // 1e-6 off a capsule's axis: the normal 40 degrees off, the depth 5e-8 of the size).
+  const Ellipsoid ellipsoid{radii};
+  if (const char* e = ellipsoid.error()) return Expected<Shape>::failure(e);
+  if (radii.x() == radii.y() && radii.y() == radii.z()) return from_core(Point{}, radii.x());
+  return from_core(ellipsoid, 0);
 }
 
 Expected<Shape> Shape::point(const Vec3& p) {

@@ -516,17 +516,23 @@ void support_feature_of(const T& shape, const Vec3T<typename T::Scalar>& d,
     const Vec3T<S> n = d.normalized();
     Vec3T<S> u, v;
     detail::plane_basis(n, u, v);
-    Vec3T<S> near[9];
-    near[0] = shape.support_core(n);
-    const S top = near[0].dot(n);
-    int count = 1;
+    Vec3T<S> samples[9];
+    samples[0] = shape.support_core(n);
     for (int i = 0; i < 8; ++i) {
       const S angle = S(2) * std::numbers::pi_v<S> * S(i) / S(8);
-      const Vec3T<S> p =
-          shape.support_core(n + S(0.1) * (std::cos(angle) * u + std::sin(angle) * v));
-      if (top - p.dot(n) <= tolerance) near[count++] = p;
+      samples[i + 1] = shape.support_core(n + S(0.1) * (std::cos(angle) * u + std::sin(angle) * v));
     }
-    detail::feature_from_points(near, count, n, out);
+    // Held to the planarity and support tests of point_set_feature(): samples of a curved part
+    // (a sum with a cone or an ellipsoid) can lie within the tolerance without being on one
+    // plane, and the polygon's plane then passed outside the shape (manifold points 1e-4 of the
+    // size outside it).
+    auto gather = [&](S top, S within, Vec3T<S>* near) {
+      int count = 0;
+      for (const Vec3T<S>& p : samples)
+        if (top - p.dot(n) <= within) near[count++] = p;
+      return count;
+    };
+    detail::point_set_feature(shape, n, tolerance, gather, out);
   }
 }
 

@@ -54,6 +54,7 @@ class Shape {
   static Expected<Shape> capsule(double radius, double half_height);
   static Expected<Shape> cylinder(double radius, double half_height);
   static Expected<Shape> cone(double radius, double half_height);
+  /// Three equal radii give a sphere: a point core with that radius, as sphere() builds it.
   static Expected<Shape> ellipsoid(const Vec3& radii);
   static Expected<Shape> point(const Vec3& p);
   static Expected<Shape> segment(const Vec3& a, const Vec3& b);

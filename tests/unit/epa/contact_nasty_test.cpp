@@ -211,6 +211,28 @@ TEST(ContactNasty, ConcentricSpheres) {
   EXPECT_TRUE(e.normal_chosen);
 }
 
+TEST(ContactNasty, EllipsoidWithEqualRadiiNearlyConcentric) {
+  // A sphere given as an ellipsoid (three equal radii), its centre 1e-6 to 1e-3 off a capsule's
+  // axis or a cylinder's: depth r_a + r_b - offset (capsule) or r_a + r_b - offset (cylinder
+  // side, the nearest face), normal along the offset. The depth changes by only the offset over
+  // all normals across the axis, which ran EPA on the curved surface into its cap.
+  const mink::Shape ball = mink::Shape::ellipsoid(Vec3(0.5, 0.5, 0.5)).value();
+  const mink::Shape capsule = mink::Shape::capsule(1, 3).value();
+  const mink::Shape cylinder = mink::Shape::cylinder(1, 2).value();
+  for (const double offset : {1e-6, 1e-5, 1e-3}) {
+    for (const mink::Shape* a : {&capsule, &cylinder}) {
+      SCOPED_TRACE(testing::Message()
+                   << "offset " << offset << (a == &capsule ? " capsule" : " cylinder"));
+      const mink::ContactResult r = mink::contact(*a, Pose::identity(), ball, at(offset, 0, 0));
+      ASSERT_EQ(r.status, mink::Status::Intersecting) << oracle::describe(r);
+      const double size = a->bounding_radius() + ball.bounding_radius();
+      EXPECT_NEAR(r.depth, 1.5 - offset, 1e-9 * size);
+      EXPECT_NEAR(r.normal.x(), 1.0, 1e-9);
+      EXPECT_NEAR((r.point_b - r.point_a + r.depth * r.normal).norm(), 0.0, 1e-9 * size);
+    }
+  }
+}
+
 TEST(ContactNasty, CrossingCapsules) {
   // Segments that cross: depth r1 + r2, normal orthogonal to both axes (chosen).
   const mink::Capsule a{0.3, 1}, b{0.2, 1.5};

@@ -1,0 +1,173 @@
+// manifold() of sums ("sweeps") with curved parts (cones, ellipsoids, cylinders) against
+// primitives, through the run-time Shape. A sum has no faces of its own: its feature is sampled
+// from its support mapping, and samples of a curved part may lie near the support plane without
+// being on one plane. Checked against support functions written here in closed form (independent
+// of the library's support mappings): no manifold point of A lies beyond A's support plane along
+// the normal, none of B beyond B's along the reverse, and no point is deeper than contact()'s
+// depth, which is itself checked against the support function of A - B.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "mink/mink.hpp"
+#include "oracle/random.hpp"
+
+namespace {
+
+using mink::Pose;
+using mink::Shape;
+using mink::Vec3;
+using oracle::Rng;
+
+/// One part of a sum, with its support function h(n) = max over the part of p . n (local frame).
+struct Part {
+  enum Kind { kPolytope, kEllipsoid, kCone, kCylinder, kTriangle, kSphere, kBox } kind;
+  std::vector<Vec3> points;   // polytope, triangle
+  Vec3 radii = Vec3::Zero();  // ellipsoid; box half extents
+  double radius = 0, half_height = 0;
+
+  double support(const Vec3& n) const {
+    const double planar = std::hypot(n.x(), n.y());
+    switch (kind) {
+      case kPolytope:
+      case kTriangle: {
+        double h = -1e300;
+        for (const Vec3& p : points) h = std::max(h, p.dot(n));
+        return h;
+      }
+      case kEllipsoid:
+        return radii.cwiseProduct(n).norm();
+      case kCone:  // apex at +half_height, base disc at -half_height
+        return std::max(half_height * n.z(), -half_height * n.z() + radius * planar);
+      case kCylinder:
+        return half_height * std::abs(n.z()) + radius * planar;
+      case kSphere:
+        return radius * n.norm();
+      case kBox:
+        return radii.cwiseProduct(n).cwiseAbs().sum();
+    }
+    return 0;
+  }
+
+  Shape shape() const {
+    switch (kind) {
+      case kPolytope:
+        return Shape::polytope(points).value();
+      case kTriangle:
+        return Shape::triangle(points[0], points[1], points[2]).value();
+      case kEllipsoid:
+        return Shape::ellipsoid(radii).value();
+      case kCone:
+        return Shape::cone(radius, half_height).value();
+      case kCylinder:
+        return Shape::cylinder(radius, half_height).value();
+      case kSphere:
+        return Shape::sphere(radius).value();
+      case kBox:
+        return Shape::box(radii).value();
+    }
+    return Shape::sphere(1).value();
+  }
+};
+
+Part random_part(Rng& rng, Part::Kind kind) {
+  Part p{kind, {}};
+  switch (kind) {
+    case Part::kPolytope:
+      for (int i = 0; i < 8; ++i) p.points.push_back(rng.in_ball(1));
+      break;
+    case Part::kTriangle:
+      for (int i = 0; i < 3; ++i) p.points.push_back(rng.in_ball(1));
+      break;
+    case Part::kEllipsoid:  // from nearly flat to round
+      p.radii = Vec3(rng.uniform(0.1, 0.6), rng.uniform(0.1, 0.6), rng.uniform(0.05, 0.6));
+      break;
+    case Part::kCone:
+    case Part::kCylinder:
+      p.radius = rng.uniform(0.1, 0.8);
+      p.half_height = rng.uniform(0.1, 1.5);
+      break;
+    case Part::kSphere:
+      p.radius = rng.uniform(0.1, 0.6);
+      break;
+    case Part::kBox:
+      p.radii = Vec3(rng.uniform(0.1, 1), rng.uniform(0.1, 1), rng.uniform(0.1, 1));
+      break;
+  }
+  return p;
+}
+
+/// World support value of the parts (summed) at pose `pose` along world direction n.
+double support(const std::vector<Part>& parts, const Pose& pose, const Vec3& n) {
+  const Vec3 local = pose.inverse_rotate(n);
+  double h = pose.translation.dot(n);
+  for (const Part& part : parts) h += part.support(local);
+  return h;
+}
+
+double bound(const std::vector<Part>& parts) {
+  double b = 0;
+  for (const Part& part : parts) {
+    double r = 0;
+    for (int i = 0; i < 64; ++i) {
+      // A loose bound is enough: it only scales tolerances.
+      const double t = 0.1 * i;
+      r = std::max(r, part.support(Vec3(std::cos(t), std::sin(t), std::cos(3 * t)).normalized()));
+    }
+    b += 2 * r;
+  }
+  return b;
+}
+
+TEST(ManifoldSum, CurvedPartsKeepThePointsOnTheShapes) {
+  const Part::Kind curved[] = {Part::kEllipsoid, Part::kCone, Part::kCylinder};
+  const Part::Kind flat[] = {Part::kPolytope, Part::kTriangle};
+  const Part::Kind others[] = {Part::kSphere, Part::kCylinder, Part::kBox, Part::kCone,
+                               Part::kEllipsoid};
+  const int count = oracle::sweep_count(1500, 300);
+  int penetrating = 0, multi = 0;
+  double worst_beyond = 0, worst_deeper = 0, worst_contact = 0;
+  for (int k = 0; k < count; ++k) {
+    Rng rng(620000 + k);
+    const std::vector<Part> a = {random_part(rng, flat[k % 2]), random_part(rng, curved[k % 3])};
+    const std::vector<Part> b = {random_part(rng, others[(k / 6) % 5])};
+    const Shape sa = Shape::sum(a[0].shape(), a[1].shape()).value();
+    const Shape sb = b[0].shape();
+    const Pose pa = rng.pose(2);
+    Pose pb = rng.pose(0);
+    pb.translation = pa.translation + rng.in_ball(1.2);
+    const mink::ContactResult c = mink::contact(sa, pa, sb, pb);
+    if (!c.intersect || c.status != mink::Status::Intersecting) continue;
+    const double size = bound(a) + bound(b);
+    const Vec3& n = c.normal;
+    const double h_a = support(a, pa, n), h_b = support(b, pb, -n);
+    // contact()'s depth is the support function of A - B along its normal (EPA's bound).
+    worst_contact = std::max(worst_contact, std::abs(h_a + h_b - c.depth) / size);
+    const mink::ManifoldResult m = mink::manifold(sa, pa, sb, pb);
+    ASSERT_GE(m.count, 1) << oracle::seed_note(k);
+    ++penetrating;
+    multi += m.count > 1;
+    for (int i = 0; i < m.count; ++i) {
+      const mink::ManifoldPoint& p = m.points[i];
+      const double beyond_a = (p.point_a.dot(m.normal) - support(a, pa, m.normal)) / size;
+      const double beyond_b = (-p.point_b.dot(m.normal) - support(b, pb, -m.normal)) / size;
+      const double deeper = (p.depth - c.depth) / size;
+      worst_beyond = std::max({worst_beyond, beyond_a, beyond_b});
+      worst_deeper = std::max(worst_deeper, deeper);
+      EXPECT_LE(beyond_a, 1e-9) << oracle::seed_note(k) << " point " << i << " outside A";
+      EXPECT_LE(beyond_b, 1e-9) << oracle::seed_note(k) << " point " << i << " outside B";
+      EXPECT_LE(deeper, 1e-9) << oracle::seed_note(k) << " point " << i << " deeper than contact";
+    }
+  }
+  EXPECT_GT(penetrating, count / 3);
+  EXPECT_LE(worst_contact, 1e-6);
+  std::printf(
+      "[manifold sum] %d penetrating pairs (%d with several points); worst / size: beyond a "
+      "support plane %.1e, deeper than contact %.1e, contact depth vs support function %.1e\n",
+      penetrating, multi, worst_beyond, worst_deeper, worst_contact);
+}
+
+}  // namespace
