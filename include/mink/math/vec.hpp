@@ -121,7 +121,7 @@ bool length_at_most(const Vec3T<S>& v, S v_sq, S reach) {
 /// unless a square underflows or overflows (sizes beyond about 2^+-250, where x^2 against
 /// bound^2 |v|^2 multiplies four of them), where length_of() decides.
 template <class S>
-bool exceeds_times_length(S x, S bound, const Vec3T<S>& v, S v_sq) {
+[[gnu::always_inline]] inline bool exceeds_times_length(S x, S bound, const Vec3T<S>& v, S v_sq) {
   if (!(x > S(0))) return false;
   const S x_sq = x * x, bound_sq = bound * bound, rhs = bound_sq * v_sq;
   constexpr S kSmallest = std::numeric_limits<S>::min(), kLargest = std::numeric_limits<S>::max();
