@@ -227,10 +227,10 @@ template <class A, class B>
 }
 
 /// closest_core_points_shifted() and their distance: returns |on_b - on_a|; `unit` (optional)
-/// receives the direction from on_a to on_b when they
-/// differ (else it is left as it was): the plain quotient while the gap is more than 1e-3 of the
-/// segments' size and distance from A's origin (its rounding then tilts it by less than 3e-13
-/// rad), segment_gap_direction()'s when the cores nearly meet.
+/// receives the direction from on_a to on_b when they differ (else it is left as it was): the
+/// plain quotient while the gap is more than 1e-3 of the segments' size and distance from A's
+/// origin (its rounding then tilts it by less than 3e-13 rad), segment_gap_direction()'s when the
+/// cores nearly meet.
 template <class A, class B>
 typename A::Scalar closest_core_points(const A& a, const PoseT<typename A::Scalar>& pose_a,
                                        const B& b, const PoseT<typename A::Scalar>& pose_b,

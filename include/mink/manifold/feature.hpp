@@ -524,8 +524,8 @@ void support_feature_of(const T& shape, const Vec3T<typename T::Scalar>& d,
     }
     // Held to the planarity and support tests of point_set_feature(): samples of a curved part
     // (a sum with a cone or an ellipsoid) can lie within the tolerance without being on one
-    // plane, and the polygon's plane then passed outside the shape (manifold points 1e-4 of the
-    // size outside it).
+    // plane, and the polygon's plane then passed outside the shape (manifold points up to 4e-4 of
+    // the size outside it).
     auto gather = [&](S top, S within, Vec3T<S>* near) {
       int count = 0;
       for (const Vec3T<S>& p : samples)
