@@ -108,20 +108,6 @@ double support(const std::vector<Part>& parts, const Pose& pose, const Vec3& n) 
   return h;
 }
 
-double bound(const std::vector<Part>& parts) {
-  double b = 0;
-  for (const Part& part : parts) {
-    double r = 0;
-    for (int i = 0; i < 64; ++i) {
-      // A loose bound is enough: it only scales tolerances.
-      const double t = 0.1 * i;
-      r = std::max(r, part.support(Vec3(std::cos(t), std::sin(t), std::cos(3 * t)).normalized()));
-    }
-    b += 2 * r;
-  }
-  return b;
-}
-
 TEST(ManifoldSum, CurvedPartsKeepThePointsOnTheShapes) {
   const Part::Kind curved[] = {Part::kEllipsoid, Part::kCone, Part::kCylinder};
   const Part::Kind flat[] = {Part::kPolytope, Part::kTriangle};
@@ -141,7 +127,7 @@ TEST(ManifoldSum, CurvedPartsKeepThePointsOnTheShapes) {
     pb.translation = pa.translation + rng.in_ball(1.2);
     const mink::ContactResult c = mink::contact(sa, pa, sb, pb);
     if (!c.intersect || c.status != mink::Status::Intersecting) continue;
-    const double size = bound(a) + bound(b);
+    const double size = sa.bounding_radius() + sb.bounding_radius();  // the bar's size
     const Vec3& n = c.normal;
     const double h_a = support(a, pa, n), h_b = support(b, pb, -n);
     // contact()'s depth is the support function of A - B along its normal (EPA's bound).
