@@ -70,10 +70,12 @@ template <class S>
                                                    const AbsRotation<S>& abs_r, const Vec3T<S>& t) {
   return ha[i] + abs_r(i, 0) * hb[0] + abs_r(i, 1) * hb[1] + abs_r(i, 2) * hb[2] - std::abs(t[i]);
 }
+/// B's face terms come from r itself, not from AbsRotation: read from there, GCC loaded rows 2 and
+/// 3 of a column as one pair, written by two separate stores, and stalled on store forwarding.
 template <class S>
 [[gnu::always_inline]] inline S box_face_overlap_b(int j, const Vec3T<S>& ha, const Vec3T<S>& hb,
-                                                   const AbsRotation<S>& abs_r, S offset_along_b) {
-  return hb[j] + abs_r(0, j) * ha[0] + abs_r(1, j) * ha[1] + abs_r(2, j) * ha[2] -
+                                                   const Mat3T<S>& r, S offset_along_b) {
+  return hb[j] + std::abs(r(0, j)) * ha[0] + std::abs(r(1, j)) * ha[1] + std::abs(r(2, j)) * ha[2] -
          std::abs(offset_along_b);
 }
 
@@ -85,12 +87,9 @@ template <class S>
   for (int i = 0; i < 3; ++i) out.face_overlap[i] = box_face_overlap_a(i, ha, hb, abs_r, t);
   // As box_box_verdict() computes it: the same offsets to the last bit.
   const Vec3T<S> offset_along_b = r.transpose() * t;
-  // B's face terms from r itself: read from abs_r, GCC loaded rows 2 and 3 of its columns as a
-  // pair, written by two separate stores, and stalled on store forwarding.
   for (int j = 0; j < 3; ++j) {
     out.offset_along_b[j] = offset_along_b[j];
-    out.face_overlap[3 + j] = hb[j] + std::abs(r(0, j)) * ha[0] + std::abs(r(1, j)) * ha[1] +
-                              std::abs(r(2, j)) * ha[2] - std::abs(offset_along_b[j]);
+    out.face_overlap[3 + j] = box_face_overlap_b(j, ha, hb, r, offset_along_b[j]);
   }
 }
 
@@ -269,7 +268,7 @@ BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3
   // centre is at -offset_along_b in B's frame.
   const Vec3T<S> offset_along_b = r.transpose() * t;
   for (int j = 0; j < 3; ++j) {
-    const S g = -box_face_overlap_b(j, ha, hb, abs_r, offset_along_b[j]);
+    const S g = -box_face_overlap_b(j, ha, hb, r, offset_along_b[j]);
     if (g > gap) return BoxBoxVerdict::Separated;
     apart |= g > S(0);
   }
