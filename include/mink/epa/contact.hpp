@@ -276,7 +276,10 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // were split across the gap, and A's landed 5 % of A's size off A. (GJK's points lined up
     // as distance() does, one held and the other placed by v, moved a point touching a needle
     // off its shape by the whole rounding.)
-    gjk.simplex.witness_points(on_a, on_b);
+    // A tetrahedron (the cores enclose the origin) gives its face nearest the origin instead.
+    SimplexT<S> touching = gjk.simplex;
+    if (touching.size == 4) detail::reduce_to_nearest_face(touching);
+    touching.witness_points(on_a, on_b);
     const Vec3T<S> midpoint = S(0.5) * (on_a + on_b);
     on_a = on_b = midpoint;
   }

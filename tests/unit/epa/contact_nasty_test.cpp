@@ -6,6 +6,8 @@
 // its exact rotations). Expected values are worked out by hand or by the oracles in tests/oracle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -608,6 +610,59 @@ TEST(ContactNasty, PlateTouchingAHugeWallKeepsItsPointsOnBoth) {
     EXPECT_LE(std::abs(signed_distance(ha, pa, on_a)), tol) << oracle::describe(r);
     EXPECT_LE(std::abs(signed_distance(hb, pb, on_b)), tol) << oracle::describe(r);
     EXPECT_LE((r.point_b - r.point_a + r.depth * r.normal).norm(), 1e-12 * size);
+  }
+}
+
+TEST(ContactNasty, CylinderSideTouchingABoxFaceKeepsItsPointOnBoth) {
+  // A cylinder's side lying on a box's face, touching (the oracle's gap 8e-17; found by the
+  // curved oracle sweep, perpendicular axes, seed 6419003). GJK ended on a tetrahedron as thin as
+  // the rounding, the four points on the plane of contact, and the origin's weights in it put the
+  // cylinder's point 6e-4 along the face from the box's: their midpoint was 4e-9 of the size
+  // outside the cylinder. The touching point must lie on both shapes (long double, 1e-12 of the
+  // size), with either shape as A.
+  const mink::Cylinder a{0.58950193671541185, 0.98471171785610845};
+  const mink::Box b{Vec3(0.38558469363063302, 0.21404332024180328, 0.50410278809512621)};
+  Pose pa, pb;
+  pa.rotation << 0.74008160956976887, -0.30391154264392994, -0.59993081719845576,
+      -0.061757729541114401, -0.91901071569645576, 0.38936523634887366, -0.66967543931261708,
+      -0.25111168567566589, -0.69891181653952494;
+  pa.translation = Vec3(0.88066474451875143, 0.013570836346604054, 0.32940283939685555);
+  pb.rotation << 0.65373782455630558, -0.56613223504013066, 0.50211666890559936,
+      -0.31772138586681398, -0.80757276266442879, -0.49686955427497548, 0.68678961677304062,
+      0.16528921758846848, -0.70781317933599663;
+  pb.translation = Vec3(0.80523216589365709, 0.35953125094860044, 1.578082008571684);
+  const double size = a.bounding_radius() + b.bounding_radius();
+  using L = long double;
+  auto local = [](const Pose& pose, const Vec3& w) {
+    std::array<L, 3> x{};
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k)
+        x[i] += L(pose.rotation(k, i)) * (L(w[k]) - L(pose.translation[k]));
+    return x;
+  };
+  // Distance outside the shape (0 inside): the point must not leave either surface.
+  auto outside_cylinder = [&](const Vec3& w) {
+    const auto x = local(pa, w);
+    const L radial = std::hypot(x[0], x[1]) - L(a.radius);
+    const L axial = std::abs(x[2]) - L(a.half_height);
+    return double(std::max({radial, axial, L(0)}));
+  };
+  auto outside_box = [&](const Vec3& w) {
+    const auto x = local(pb, w);
+    L q = 0;
+    for (int i = 0; i < 3; ++i) q = std::max(q, std::abs(x[i]) - L(b.half_extents[i]));
+    return double(q);
+  };
+  for (const bool swap : {false, true}) {
+    SCOPED_TRACE(swap);
+    const auto r = swap ? mink::contact(b, pb, a, pa) : mink::contact(a, pa, b, pb);
+    EXPECT_TRUE(r.intersect) << oracle::describe(r);
+    EXPECT_LE(r.depth, 1e-12 * size) << oracle::describe(r);
+    const Vec3 on_a = swap ? r.point_b : r.point_a, on_b = swap ? r.point_a : r.point_b;
+    for (const Vec3& p : {on_a, on_b}) {
+      EXPECT_LE(outside_cylinder(p), 1e-12 * size) << oracle::describe(r);
+      EXPECT_LE(outside_box(p), 1e-12 * size) << oracle::describe(r);
+    }
   }
 }
 
