@@ -261,6 +261,15 @@ template <class S>
 /// The faces of a tetrahedron (w0, w1, w2, w3): face i leaves out vertex i.
 inline constexpr int kTetrahedronFaces[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
 
+/// Offers the closest point of each face of the tetrahedron w[0..4) (see offer_vertex()).
+template <class S>
+void offer_tetrahedron_faces(const Vec3T<S>* w, SubSimplex<S>& best) {
+  for (const auto& face : kTetrahedronFaces) {
+    const SubSimplex<S> candidate = closest_on_triangle_cold(w, face[0], face[1], face[2]);
+    if (candidate.dist_sq < best.dist_sq) best = candidate;
+  }
+}
+
 template <class S>
 SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
   const Vec3T<S> e1 = w[1] - w[0], e2 = w[2] - w[0], e3 = w[3] - w[0];
@@ -298,10 +307,7 @@ SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
         return best;
     if (best.mask != 0) return best;
   }
-  for (int i = 0; i < 4; ++i) {
-    const SubSimplex<S> face = closest_on_triangle_cold(w, kFace[i][0], kFace[i][1], kFace[i][2]);
-    if (face.dist_sq < best.dist_sq) best = face;
-  }
+  offer_tetrahedron_faces(w, best);
   return best;
 }
 
@@ -412,25 +418,20 @@ template <class S>
 }
 
 /// Reduces the tetrahedron `simplex` (size 4) to the closest point of its face nearest the origin,
-/// with that face's weights, and returns the point. For a tetrahedron that holds the origin
+/// with that face's weights. For a tetrahedron that holds the origin
 /// (GJK's last simplex for cores that touch), so that its witness points lie on the touching
 /// features: touching puts the four points on the plane of contact, and the origin's weights
 /// in so thin a tetrahedron carry the rounding divided by its thickness (they put a cylinder's
 /// point 6e-4 of the size along a box's face from the box's point, and their midpoint 4e-9 of
 /// the size off the cylinder). A face's weights are the origin's projection into that plane.
 template <class S>
-[[gnu::noinline]] Vec3T<S> reduce_to_nearest_face(SimplexT<S>& simplex) {
+[[gnu::noinline]] void reduce_to_nearest_face(SimplexT<S>& simplex) {
   Vec3T<S> w[4];
   for (int i = 0; i < 4; ++i) w[i] = simplex.vertices[i].w;
-  const auto& kFace = kTetrahedronFaces;
-  SubSimplex<S> best = closest_on_triangle_cold(w, kFace[0][0], kFace[0][1], kFace[0][2]);
-  for (int i = 1; i < 4; ++i) {
-    const SubSimplex<S> face = closest_on_triangle_cold(w, kFace[i][0], kFace[i][1], kFace[i][2]);
-    if (face.dist_sq < best.dist_sq) best = face;
-  }
-  const KeptVertices<S> kept = vertices_to_keep(best, w, 4);
-  keep_vertices(simplex, kept, simplex);
-  return kept.v;
+  SubSimplex<S> best;
+  best.v.setZero();  // read only when no face offers a finite point: the nearest vertex then
+  offer_tetrahedron_faces(w, best);
+  keep_vertices(simplex, vertices_to_keep(best, w, 4), simplex);
 }
 
 /// reduce_to_closest() out of line, for the rare paths of the GJK loop (warm start,
