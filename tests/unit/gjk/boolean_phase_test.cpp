@@ -168,7 +168,7 @@ TEST(BooleanPhase, FlatAndSliverPairsMatchBruteForce) {
 // within rounding of touching, either side of the 1e-12 touching tolerance, far from the world
 // origin too; intersect() and distance() against brute force over the Minkowski difference.
 TEST(BooleanPhase, ContactOnTheLineOfCentresMatchesBruteForce) {
-  const int n = oracle::sweep_count(400);
+  const int n = oracle::sweep_count(400, 150);
   int overlapping = 0, separated = 0, decided_at_once = 0;
   for (int i = 0; i < n; ++i) {
     const std::uint64_t seed = 888000 + i;

@@ -136,7 +136,7 @@ TEST(GjkDistance, PolytopePairMatchesBruteForce) {
 /// their normal, flat and needle boxes, 1e3 scale ratios, 1e6 from the origin, and rounded boxes.
 TEST(GjkDistance, BoxBoxClosedFormMatchesBruteForce) {
   const std::uint64_t base = 90000;
-  const int n = oracle::sweep_count(1500, 500);
+  const int n = oracle::sweep_count(1500, 250);
   oracle::Worst worst("box-box closed form");
   oracle::DepthWorst contact_worst("contact box-box closed form");
   int closed_form[5] = {}, separated[5] = {};

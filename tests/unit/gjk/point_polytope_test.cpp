@@ -87,7 +87,7 @@ Vec3 centre_near(Rng& rng, const std::vector<Vec3>& pts, double scale) {
 /// Sweeps spheres (radius 0: a point; `rounded`: a Rounded<Point>) against polytopes with planes;
 /// `many`: random and round sets of 25 to 34 points only (point_set()).
 void sweep(std::uint64_t base, int default_count, const char* name, bool many = false) {
-  const int n = oracle::sweep_count(default_count);
+  const int n = oracle::sweep_count(default_count, default_count / 3);
   oracle::Worst worst(std::string(name) + " distance");
   oracle::DepthWorst depth_worst(std::string(name) + " contact");
   int with_planes = 0;
