@@ -345,4 +345,82 @@ TEST(ContactBruteForce, SpherePolytope) {
   round_against_points<mink::Sphere>("contact sphere-polytope", 450000, 500, true, false);
 }
 
+/// One part of a Minkowski sum: a point set of any kind as a polytope, a box, a segment or a
+/// triangle, with its points (the box's corners) in `pts`; `small`: a segment or a triangle only
+/// (the oracle's cost grows as the cube of the sum's points).
+mink::Shape random_sum_part(Rng& rng, std::vector<Vec3>& pts, bool& needle, bool small) {
+  const double scale = rng.log_uniform(0.02, 2);
+  switch (small ? rng.integer(2, 3) : rng.integer(0, 3)) {
+    case 0: {
+      const int kind = rng.integer(0, kPointSetKinds - 1);
+      needle |= kind == kNeedle;
+      pts = random_point_set(rng, kind, scale);
+      return mink::Shape::polytope(pts).value();
+    }
+    case 1: {
+      const Vec3 half(rng.log_uniform(0.02, 2), rng.log_uniform(0.02, 2), rng.log_uniform(0.02, 2));
+      pts = box_corners_local(half);
+      return mink::Shape::box(half).value();
+    }
+    case 2:
+      pts = {rng.in_ball(scale), rng.in_ball(scale)};
+      return mink::Shape::segment(pts[0], pts[1]).value();
+    default:
+      pts = {rng.in_ball(scale), rng.in_ball(scale), rng.in_ball(scale)};
+      return mink::Shape::triangle(pts[0], pts[1], pts[2]).value();
+  }
+}
+
+/// Sums (Shape::sum) of two parts, sometimes rounded, against polytopes, sometimes rounded: the
+/// sum of point sets P and Q is the hull of the points p + q, so the depth is the brute force's
+/// over those points (in long double) plus the radii. contact() runs GJK and EPA on the sum's
+/// support, the sum of its parts' supports.
+TEST(ContactBruteForce, SumsAgainstPolytopes) {
+  const std::uint64_t base = 460000;
+  const int n = oracle::sweep_count(400, 80);
+  oracle::DepthWorst worst("contact sum-polytope");
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    bool needle = false;
+    std::vector<Vec3> p, q;
+    const mink::Shape first = random_sum_part(rng, p, needle, false);
+    const mink::Shape second = random_sum_part(rng, q, needle, !rng.chance(0.1));
+    const double ra = rng.chance(0.3) ? rng.log_uniform(1e-3, 0.3) : 0.0;
+    const double rb = rng.chance(0.3) ? rng.log_uniform(1e-3, 0.3) : 0.0;
+    const mink::Shape sum = mink::Shape::sum(first, second).value();
+    const mink::Shape a = ra > 0 ? mink::Shape::rounded(sum, ra).value() : sum;
+    const int kb = rng.integer(0, kPointSetKinds - 1);
+    needle |= kb == kNeedle;
+    const auto lb = random_point_set(rng, kb, rng.log_uniform(0.05, 2));
+    const mink::Shape polytope = mink::Shape::polytope(lb).value();
+    const mink::Shape b = rb > 0 ? mink::Shape::rounded(polytope, rb).value() : polytope;
+    // The sum's points p + q in A's frame, each in long double (exact for these magnitudes).
+    std::vector<Vec3> la;
+    for (const Vec3& x : p)
+      for (const Vec3& y : q) la.push_back(x + y);
+    const Pose pa = rng.pose(5);
+    std::vector<V3> wa;
+    for (const Vec3& x : p)
+      for (const Vec3& y : q)
+        wa.push_back(widen(pa.rotation) * (widen(x) + widen(y)) + widen(pa.translation));
+    const double size = bounding_radius(p) + bounding_radius(q) + ra + bounding_radius(lb) + rb;
+    std::vector<V3> wb;
+    Real depth = 0;
+    const Pose pb = place_penetrating(
+        rng, pa, la, lb, 0.5 * size,
+        [&](const Pose& pose) {
+          wb = oracle::world_points(lb, pose);
+          return ra + rb + oracle::least_support_of_difference(wa, wb);
+        },
+        depth);
+    const auto got = mink::contact(a, pa, b, pb);
+    oracle::expect_contact_matches(depth, oracle::points_support(wa, ra),
+                                   oracle::points_support(wb, rb), got, size, pa.translation.norm(),
+                                   worst, oracle::kDepthTolerance, false, needle);
+  }
+  EXPECT_GT(worst.penetrating, n * 8 / 10);
+}
+
 }  // namespace
