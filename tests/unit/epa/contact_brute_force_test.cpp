@@ -396,7 +396,8 @@ TEST(ContactBruteForce, SumsAgainstPolytopes) {
     const auto lb = random_point_set(rng, kb, rng.log_uniform(0.05, 2));
     const mink::Shape polytope = mink::Shape::polytope(lb).value();
     const mink::Shape b = rb > 0 ? mink::Shape::rounded(polytope, rb).value() : polytope;
-    // The sum's points p + q in A's frame, each in long double (exact for these magnitudes).
+    // The sum's points p + q, and in the world in long double (where p + q is exact, or within
+    // 1e-19 of the size).
     std::vector<Vec3> la;
     for (const Vec3& x : p)
       for (const Vec3& y : q) la.push_back(x + y);
