@@ -15,6 +15,7 @@
 
 #include "mink/mink.hpp"
 #include "oracle/brute_force.hpp"
+#include "oracle/check.hpp"
 #include "oracle/contact_check.hpp"
 #include "oracle/penetration.hpp"
 #include "oracle/random.hpp"
@@ -371,10 +372,51 @@ mink::Shape random_sum_part(Rng& rng, std::vector<Vec3>& pts, bool& needle, bool
   }
 }
 
+/// A random sum of two parts (random_sum_part()), sometimes rounded, as A at `pa`, and a random
+/// polytope, sometimes rounded, as B; with the sum's points p + q (local), both shapes' world
+/// points in long double (where p + q is exact, or within 1e-19 of the size), and their size.
+struct SumCase {
+  mink::Shape a, b;
+  double ra = 0, rb = 0;
+  bool needle = false;
+  std::vector<Vec3> la, lb;
+  std::vector<V3> wa;
+  Pose pa;
+  double size = 0;
+
+  explicit SumCase(Rng& rng) {
+    std::vector<Vec3> p, q;
+    const mink::Shape first = random_sum_part(rng, p, needle, false);
+    const mink::Shape second = random_sum_part(rng, q, needle, !rng.chance(0.1));
+    ra = rng.chance(0.3) ? rng.log_uniform(1e-3, 0.3) : 0.0;
+    rb = rng.chance(0.3) ? rng.log_uniform(1e-3, 0.3) : 0.0;
+    const mink::Shape sum = mink::Shape::sum(first, second).value();
+    a = ra > 0 ? mink::Shape::rounded(sum, ra).value() : sum;
+    const int kb = rng.integer(0, kPointSetKinds - 1);
+    needle |= kb == kNeedle;
+    lb = random_point_set(rng, kb, rng.log_uniform(0.05, 2));
+    const mink::Shape polytope = mink::Shape::polytope(lb).value();
+    b = rb > 0 ? mink::Shape::rounded(polytope, rb).value() : polytope;
+    pa = rng.pose(5);
+    for (const Vec3& x : p)
+      for (const Vec3& y : q) {
+        la.push_back(x + y);
+        wa.push_back(widen(pa.rotation) * (widen(x) + widen(y)) + widen(pa.translation));
+      }
+    size = bounding_radius(p) + bounding_radius(q) + ra + bounding_radius(lb) + rb;
+  }
+
+  /// The least support value of A - B with B at pb (its depth, or minus its distance).
+  Real least_support(const Pose& pb, std::vector<V3>& wb) const {
+    wb = oracle::world_points(lb, pb);
+    return ra + rb + oracle::least_support_of_difference(wa, wb);
+  }
+};
+
 /// Sums (Shape::sum) of two parts, sometimes rounded, against polytopes, sometimes rounded: the
 /// sum of point sets P and Q is the hull of the points p + q, so the depth is the brute force's
-/// over those points (in long double) plus the radii. contact() runs GJK and EPA on the sum's
-/// support, the sum of its parts' supports.
+/// over those points plus the radii. contact() runs GJK and EPA on the sum's support, the sum of
+/// its parts' supports.
 TEST(ContactBruteForce, SumsAgainstPolytopes) {
   const std::uint64_t base = 460000;
   const int n = oracle::sweep_count(400, 80);
@@ -383,45 +425,68 @@ TEST(ContactBruteForce, SumsAgainstPolytopes) {
     const std::uint64_t seed = base + i;
     SCOPED_TRACE(oracle::seed_note(seed));
     Rng rng(seed);
-    bool needle = false;
-    std::vector<Vec3> p, q;
-    const mink::Shape first = random_sum_part(rng, p, needle, false);
-    const mink::Shape second = random_sum_part(rng, q, needle, !rng.chance(0.1));
-    const double ra = rng.chance(0.3) ? rng.log_uniform(1e-3, 0.3) : 0.0;
-    const double rb = rng.chance(0.3) ? rng.log_uniform(1e-3, 0.3) : 0.0;
-    const mink::Shape sum = mink::Shape::sum(first, second).value();
-    const mink::Shape a = ra > 0 ? mink::Shape::rounded(sum, ra).value() : sum;
-    const int kb = rng.integer(0, kPointSetKinds - 1);
-    needle |= kb == kNeedle;
-    const auto lb = random_point_set(rng, kb, rng.log_uniform(0.05, 2));
-    const mink::Shape polytope = mink::Shape::polytope(lb).value();
-    const mink::Shape b = rb > 0 ? mink::Shape::rounded(polytope, rb).value() : polytope;
-    // The sum's points p + q, and in the world in long double (where p + q is exact, or within
-    // 1e-19 of the size).
-    std::vector<Vec3> la;
-    for (const Vec3& x : p)
-      for (const Vec3& y : q) la.push_back(x + y);
-    const Pose pa = rng.pose(5);
-    std::vector<V3> wa;
-    for (const Vec3& x : p)
-      for (const Vec3& y : q)
-        wa.push_back(widen(pa.rotation) * (widen(x) + widen(y)) + widen(pa.translation));
-    const double size = bounding_radius(p) + bounding_radius(q) + ra + bounding_radius(lb) + rb;
+    const SumCase c(rng);
     std::vector<V3> wb;
     Real depth = 0;
     const Pose pb = place_penetrating(
-        rng, pa, la, lb, 0.5 * size,
-        [&](const Pose& pose) {
-          wb = oracle::world_points(lb, pose);
-          return ra + rb + oracle::least_support_of_difference(wa, wb);
-        },
-        depth);
-    const auto got = mink::contact(a, pa, b, pb);
-    oracle::expect_contact_matches(depth, oracle::points_support(wa, ra),
-                                   oracle::points_support(wb, rb), got, size, pa.translation.norm(),
-                                   worst, oracle::kDepthTolerance, false, needle);
+        rng, c.pa, c.la, c.lb, 0.5 * c.size,
+        [&](const Pose& pose) { return c.least_support(pose, wb); }, depth);
+    const auto got = mink::contact(c.a, c.pa, c.b, pb);
+    oracle::expect_contact_matches(
+        depth, oracle::points_support(c.wa, c.ra), oracle::points_support(wb, c.rb), got, c.size,
+        c.pa.translation.norm(), worst, oracle::kDepthTolerance, false, c.needle);
   }
   EXPECT_GT(worst.penetrating, n * 8 / 10);
+}
+
+/// The same sums placed anywhere from deep inside to a size apart: distance(), contact() and
+/// intersect() against the brute force's distance (the least support value, negated), the
+/// normal by its support value, and the points by their gap.
+TEST(ContactBruteForce, SumsApartFromPolytopes) {
+  const std::uint64_t base = 470000;
+  const int n = oracle::sweep_count(200, 40);
+  int separated = 0;
+  double worst_distance = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const SumCase c(rng);
+    const Pose pb = Pose::from(c.pa.translation + rng.unit() * (c.size * rng.uniform(0.3, 1.3)),
+                               rng.rotation());
+    std::vector<V3> wb;
+    const double expected = -static_cast<double>(c.least_support(pb, wb));  // the distance
+    const auto got = mink::distance(c.a, c.pa, c.b, pb);
+    const auto got_contact = mink::contact(c.a, c.pa, c.b, pb);
+    const auto got_bool = mink::intersect(c.a, c.pa, c.b, pb);
+    const double band = oracle::kTouchingBand * c.size;
+    if (std::abs(expected) <= band) continue;  // touching: either answer
+    EXPECT_EQ(got_bool.intersect, expected < 0) << "oracle distance " << expected;
+    EXPECT_EQ(got_contact.intersect, expected < 0) << "oracle distance " << expected;
+    if (expected < 0) {
+      EXPECT_EQ(got.status, mink::Status::Intersecting);
+      continue;
+    }
+    ++separated;
+    ASSERT_EQ(got.status, mink::Status::Separated) << "oracle distance " << expected;
+    const double error =
+        std::max(std::abs(got.distance - expected), std::abs(got_contact.distance - expected)) /
+        c.size;
+    worst_distance = std::max(worst_distance, error);
+    EXPECT_LE(error, oracle::kDistanceTolerance) << "distance " << got.distance << ", contact "
+                                                 << got_contact.distance << ", oracle " << expected;
+    // The normal proves the distance: A - B lies below -distance along it.
+    const Real along = oracle::support_of_difference(c.wa, wb, widen(got.normal)) + c.ra + c.rb;
+    EXPECT_LE(std::abs(static_cast<double>(along) + expected) / c.size, 1e-9)
+        << "the normal's support value " << static_cast<double>(along);
+    EXPECT_LE((got.point_b - got.point_a - got.distance * got.normal).norm() /
+                  (c.size + c.pa.translation.norm()),
+              1e-10)
+        << "point_b - point_a != distance * normal";
+  }
+  std::printf("[  worst   ] distance sum-polytope: %.3g (relative); %d of %d separated\n",
+              worst_distance, separated, n);
+  EXPECT_GT(separated, n / 4);
 }
 
 }  // namespace
