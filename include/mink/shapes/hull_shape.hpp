@@ -22,16 +22,15 @@
 /// plateau (up to kHullPlateauLimit vertices, then it scans) and returns its lowest vertex index.
 /// So warm starts, and races on the hint below, change the cost of a query but not its result.
 ///
-/// Start vertex. Collision queries on one shape ask for support along slowly turning directions
-/// (GJK iterations, then the next simulation step), so the previous answer (the hint) is a few
-/// moves from the next one. But a shape shared by many bodies, or queried as A and as B, sees
-/// directions jump, so when the hint is not the answer the climb also looks up a start in a
-/// direction table (6 k^2 cells of the cube of directions, each holding its centre's answer, k
-/// about sqrt(2 n / 3): some four cells per vertex) and jumps there if it is higher than the
-/// hint's best neighbour. A cold query then starts on its answer or next to it, a warm one that
-/// needs no move skips the table. A table that fits in cache (kHullSmallSeedTable) is read as soon
-/// as the hint is not the answer; a larger one only after kHullSeedAfterMoves moves, since its
-/// read is a cache miss that a warm query needing one move should not pay.
+/// Start vertex. Two candidates: the previous answer (the hint), right for a shape queried along
+/// slowly turning directions (the next simulation step), and a direction table's seed (6 k^2
+/// cells of the cube of directions, each holding its centre's answer, k about sqrt(2 n / 3): some
+/// four cells per vertex), which is a random direction's answer three times in four and next to
+/// it otherwise. The directions of one query jump (GJK's first direction is a new pose's, its
+/// next ones turn by large angles; a shape shared by many bodies, or queried as A and as B, sees
+/// each pair's), so a table that fits in cache (kHullSmallSeedTable) is read first: the climb
+/// starts from the higher of the two. A larger table is read only after kHullSeedAfterMoves moves
+/// from the hint, since its read is a cache miss that a warm query should not pay.
 /// The hint lives in the shape as a relaxed `std::atomic<std::uint32_t>` on its own cache line:
 /// support is `const` and shapes are shared between threads, any start is correct (see Ties) so a
 /// race between threads only changes a start, and a relaxed 32-bit load and store compile to
@@ -105,12 +104,14 @@ inline constexpr std::size_t kHullClimbMinVertices = 64;
 /// larger one is resolved by the scan, with the same answer.
 inline constexpr std::size_t kHullPlateauLimit = 32;
 
-/// A direction table of at most this many cells (32 KB; hulls of up to about 1,900 vertices) is
-/// looked up as soon as the hint turns out not to be the answer: it stays in cache beside the
-/// hull, and a cold query (random directions) saves the two moves it would otherwise climb before
-/// jumping (support cold 37 ns instead of 59 at 128 vertices, 44 instead of 78 at 512; warm
-/// queries, which read it only when they move, within a nanosecond except at 256 vertices, 5 ns
-/// slower; bench/hull_support_bench.cpp).
+/// A direction table of at most this many cells (32 KB; hulls of up to about 1,900 vertices)
+/// stays in cache beside the hull and is read on every query, before any move: the climb starts
+/// from the higher of its seed and the hint. Against reading it only once the hint's neighbours
+/// show that the hint is not the answer (bench/hull_support_bench.cpp, 128 vertices): support on
+/// random directions 25 ns instead of 35, on directions turning 0.02 rad per query 14 ns instead
+/// of 6 (the seed's lookup is then pure cost); in GJK's own sequence of directions the seed
+/// wins: intersect of two 128-vertex polytopes apart 108 ns instead of 128, their distance 1.43
+/// us instead of 1.62 (docs/benchmarks.md, stop 44).
 inline constexpr std::size_t kHullSmallSeedTable = 8192;
 
 /// A climb from the hint on a hull with a larger table looks the table up after this many moves:
@@ -246,14 +247,23 @@ class ConvexHullShapeT {
     return nodes_.empty() ? "convex hull shape has no vertices" : nullptr;
   }
 
-  /// Index of a vertex farthest along d (thread-safe). The climb starts from the previous answer
-  /// (the hint); when that is not the answer, it jumps to the direction table's seed for d if the
-  /// seed is higher than the hint's best neighbour. A warm query that needs no move thus costs
-  /// no table lookup.
+  /// Index of a vertex farthest along d (thread-safe). The climb starts from the higher of the
+  /// previous answer (the hint) and the direction table's seed for d; with a table too large for
+  /// the cache, from the hint, jumping to the seed after kHullSeedAfterMoves moves if it is
+  /// higher than the best neighbour then.
   std::size_t support_index(const Vec3T<S>& d) const {
     if (!climbs_) return scan_index(d);
     const std::uint32_t hint = hint_.load(std::memory_order_relaxed);
-    const std::uint32_t v = climb<true>(d, hint, dot(nodes_[hint].p, d.x(), d.y(), d.z()));
+    const S hint_value = dot(nodes_[hint].p, d.x(), d.y(), d.z());
+    std::uint32_t v;
+    if (seeds_.size() <= kHullSmallSeedTable) {
+      const std::uint32_t seed = seed_index(d);
+      const S seed_value = dot(nodes_[seed].p, d.x(), d.y(), d.z());
+      v = seed_value > hint_value ? climb<false>(d, seed, seed_value)
+                                  : climb<false>(d, hint, hint_value);
+    } else {
+      v = climb<true>(d, hint, hint_value);
+    }
     if (v != hint) hint_.store(v, std::memory_order_relaxed);
     return v;
   }
@@ -393,21 +403,14 @@ class ConvexHullShapeT {
     }
   }
 
-  /// Moves a climb from the hint makes before it reads the direction table: none for a table that
-  /// stays in cache (kHullSmallSeedTable), kHullSeedAfterMoves for a larger one.
-  std::size_t seed_after_moves() const {
-    return seeds_.size() <= kHullSmallSeedTable ? 0 : kHullSeedAfterMoves;
-  }
-
   /// Strict-improvement climb from `start`, whose support value is `best`. kSeed: after
-  /// seed_after_moves() moves, jump to the direction table's seed if it is higher than the best
+  /// kHullSeedAfterMoves moves, jump to the direction table's seed if it is higher than the best
   /// neighbour (still a strict improvement, so the bound on moves holds).
   template <bool kSeed>
   std::uint32_t climb(const Vec3T<S>& d, std::uint32_t start, S best) const {
     const S dx = d.x(), dy = d.y(), dz = d.z();
     std::uint32_t v = start;
     std::uint32_t begin = nodes_[v].begin, end = nodes_[v].end;
-    const std::size_t seed_after = kSeed ? seed_after_moves() : 0;
     // Each move strictly increases the support value, so at most size() - 1 moves can happen.
     for (std::size_t moves = 0; moves < nodes_.size(); ++moves) {
       std::uint32_t next = end;  // none
@@ -423,7 +426,7 @@ class ConvexHullShapeT {
       }
       if (next == end) return tie ? plateau_index(d, v, best) : v;
       if constexpr (kSeed) {
-        if (moves == seed_after) {
+        if (moves == kHullSeedAfterMoves) {
           const std::uint32_t seed = seed_index(d);
           const S seed_value = dot(nodes_[seed].p, dx, dy, dz);
           if (seed_value > next_value) {
