@@ -28,9 +28,15 @@
 /// four cells per vertex), which is a random direction's answer three times in four and next to
 /// it otherwise. The directions of one query jump (GJK's first direction is a new pose's, its
 /// next ones turn by large angles; a shape shared by many bodies, or queried as A and as B, sees
-/// each pair's), so a table that fits in cache (kHullSmallSeedTable) is read first: the climb
-/// starts from the higher of the two. A larger table is read only after kHullSeedAfterMoves moves
-/// from the hint, since its read is a cache miss that a warm query should not pay.
+/// each pair's), so both are read on every query and the climb starts from the higher.
+///
+/// Measured against reading the table only once the hint's neighbours show that the hint is not
+/// the answer (and, for tables over 32 KB, after two moves), bench/hull_support_bench.cpp, ns per
+/// support: on directions turning 0.02 rad per query the seed's lookup is pure cost, 6 -> 14 at
+/// 128 vertices and 21 -> 26 at 4,096; on random directions 35 -> 25 at 128, 102 -> 39 at
+/// 4,096 and 600-860 -> 120 at 100,000. In GJK's own sequence of directions the seed wins:
+/// intersect of two 128-vertex polytopes apart 128 -> 108, their distance 1.62 -> 1.43 us,
+/// distance of two 4,096-vertex hulls 875 -> 840 (docs/benchmarks.md, stop 44).
 /// The hint lives in the shape as a relaxed `std::atomic<std::uint32_t>` on its own cache line:
 /// support is `const` and shapes are shared between threads, any start is correct (see Ties) so a
 /// race between threads only changes a start, and a relaxed 32-bit load and store compile to
@@ -103,22 +109,6 @@ inline constexpr std::size_t kHullClimbMinVertices = 64;
 /// The largest plateau (vertices of equal support value) the climb collects to break a tie; a
 /// larger one is resolved by the scan, with the same answer.
 inline constexpr std::size_t kHullPlateauLimit = 32;
-
-/// A direction table of at most this many cells (32 KB; hulls of up to about 1,900 vertices)
-/// stays in cache beside the hull and is read on every query, before any move: the climb starts
-/// from the higher of its seed and the hint. Against reading it only once the hint's neighbours
-/// show that the hint is not the answer (bench/hull_support_bench.cpp, 128 vertices): support on
-/// random directions 25 ns instead of 35, on directions turning 0.02 rad per query 14 ns instead
-/// of 6 (the seed's lookup is then pure cost); in GJK's own sequence of directions the seed
-/// wins: intersect of two 128-vertex polytopes apart 108 ns instead of 128, their distance 1.43
-/// us instead of 1.62 (docs/benchmarks.md, stop 44).
-inline constexpr std::size_t kHullSmallSeedTable = 8192;
-
-/// A climb from the hint on a hull with a larger table looks the table up after this many moves:
-/// warm queries (the answer a move or two from the hint) then never read it, and its read is a
-/// cache miss (warm queries 28 ns instead of 20 at 4,096 vertices, measured with
-/// bench/hull_support_bench.cpp), while cold ones take two steps before jumping.
-inline constexpr std::size_t kHullSeedAfterMoves = 2;
 
 template <class S>
 class ConvexHullShapeT {
@@ -248,22 +238,15 @@ class ConvexHullShapeT {
   }
 
   /// Index of a vertex farthest along d (thread-safe). The climb starts from the higher of the
-  /// previous answer (the hint) and the direction table's seed for d; with a table too large for
-  /// the cache, from the hint, jumping to the seed after kHullSeedAfterMoves moves if it is
-  /// higher than the best neighbour then.
+  /// previous answer (the hint) and the direction table's seed for d.
   std::size_t support_index(const Vec3T<S>& d) const {
     if (!climbs_) return scan_index(d);
     const std::uint32_t hint = hint_.load(std::memory_order_relaxed);
+    const std::uint32_t seed = seed_index(d);
     const S hint_value = dot(nodes_[hint].p, d.x(), d.y(), d.z());
-    std::uint32_t v;
-    if (seeds_.size() <= kHullSmallSeedTable) {
-      const std::uint32_t seed = seed_index(d);
-      const S seed_value = dot(nodes_[seed].p, d.x(), d.y(), d.z());
-      v = seed_value > hint_value ? climb<false>(d, seed, seed_value)
-                                  : climb<false>(d, hint, hint_value);
-    } else {
-      v = climb<true>(d, hint, hint_value);
-    }
+    const S seed_value = dot(nodes_[seed].p, d.x(), d.y(), d.z());
+    const std::uint32_t v =
+        seed_value > hint_value ? climb(d, seed, seed_value) : climb(d, hint, hint_value);
     if (v != hint) hint_.store(v, std::memory_order_relaxed);
     return v;
   }
@@ -271,7 +254,7 @@ class ConvexHullShapeT {
   /// The climb from vertex `start` (< size()), without hint or seed: the same answer as
   /// support_index for every start. NaN directions return `start`.
   std::uint32_t climb_index(const Vec3T<S>& d, std::uint32_t start) const {
-    return climb<false>(d, start, dot(nodes_[start].p, d.x(), d.y(), d.z()));
+    return climb(d, start, dot(nodes_[start].p, d.x(), d.y(), d.z()));
   }
 
   /// Calls f(u) for each neighbour u of vertex v (< size()) on the hull's edge graph.
@@ -302,14 +285,18 @@ class ConvexHullShapeT {
   /// zero or non-finite direction, and for shapes that scan).
   std::uint32_t seed_index(const Vec3T<S>& d) const {
     if (seeds_.empty()) return 0;
+    const S abs_d[3] = {std::abs(d.x()), std::abs(d.y()), std::abs(d.z())};
     int axis = 0;
-    S a[3] = {std::abs(d.x()), std::abs(d.y()), std::abs(d.z())};
-    if (a[1] > a[axis]) axis = 1;
-    if (a[2] > a[axis]) axis = 2;
-    if (!(a[axis] > S(0)) || !(a[axis] <= std::numeric_limits<S>::max())) return 0;
-    const S inv = S(1) / a[axis];
+    if (abs_d[1] > abs_d[axis]) axis = 1;
+    if (abs_d[2] > abs_d[axis]) axis = 2;
+    const S a = abs_d[axis];
+    if (!(a > S(0)) || !(a <= std::numeric_limits<S>::max())) return 0;
+    // A coordinate u across the axis, in [-a, a], lies (u + a) k / (2 a) cells from the face's
+    // edge: one division for both coordinates, and no conversion of k (2 ns of a support call).
+    const S scale = seed_half_cells_ / a;
     const std::size_t face = std::size_t(2 * axis + (d[axis] < S(0) ? 1 : 0));
-    const std::size_t cu = cell(d[(axis + 1) % 3] * inv), cv = cell(d[(axis + 2) % 3] * inv);
+    const std::size_t cu = cell((d[detail::kNextAxis[axis]] + a) * scale);
+    const std::size_t cv = cell((d[detail::kPrevAxis[axis]] + a) * scale);
     return seeds_[(face * seed_cells_ + cu) * seed_cells_ + cv];
   }
 
@@ -332,6 +319,7 @@ class ConvexHullShapeT {
     status_ = o.status_;
     climbs_ = o.climbs_;
     seed_cells_ = o.seed_cells_;
+    seed_half_cells_ = o.seed_half_cells_;
     tolerance_ = o.tolerance_;
     bounding_radius_ = o.bounding_radius_;
     centre_ = o.centre_;
@@ -367,11 +355,10 @@ class ConvexHullShapeT {
   /// The one formula for a support value, so that equal vertices give bit-identical values.
   static S dot(const S* p, S dx, S dy, S dz) { return p[0] * dx + p[1] * dy + p[2] * dz; }
 
-  /// Cell of a cube-face coordinate in [-1, 1] (NaN: cell 0).
-  std::size_t cell(S u) const {
-    const S f = (u + S(1)) * (S(seed_cells_) * S(0.5));
+  /// The cell f cells from a face's edge, f in [0, k] (NaN: cell 0).
+  std::size_t cell(S f) const {
     if (!(f > S(0))) return 0;
-    return f >= S(seed_cells_) ? seed_cells_ - 1 : std::size_t(f);
+    return f >= S(2) * seed_half_cells_ ? seed_cells_ - 1 : std::size_t(f);
   }
 
   /// The direction table: the cube of directions, each face cut into k x k cells (k about
@@ -385,6 +372,7 @@ class ConvexHullShapeT {
     seed_cells_ = std::clamp<std::size_t>(
         std::size_t(std::ceil(std::sqrt(double(nodes_.size()) * (2.0 / 3.0)))), 1, 64);
     const std::size_t k = seed_cells_;
+    seed_half_cells_ = S(0.5) * S(k);
     seeds_.assign(6 * k * k, 0);
     std::uint32_t v = 0;
     for (std::size_t face = 0; face < 6; ++face) {
@@ -397,16 +385,13 @@ class ConvexHullShapeT {
           d[axis] = face % 2 ? S(-1) : S(1);
           d[(axis + 1) % 3] = S((2 * double(i) + 1) / double(k) - 1);
           d[(axis + 2) % 3] = S((2 * double(jj) + 1) / double(k) - 1);
-          v = climb<false>(d, v, dot(nodes_[v].p, d.x(), d.y(), d.z()));
+          v = climb(d, v, dot(nodes_[v].p, d.x(), d.y(), d.z()));
           seeds_[(face * k + i) * k + jj] = v;
         }
     }
   }
 
-  /// Strict-improvement climb from `start`, whose support value is `best`. kSeed: after
-  /// kHullSeedAfterMoves moves, jump to the direction table's seed if it is higher than the best
-  /// neighbour (still a strict improvement, so the bound on moves holds).
-  template <bool kSeed>
+  /// Strict-improvement climb from `start`, whose support value is `best`.
   std::uint32_t climb(const Vec3T<S>& d, std::uint32_t start, S best) const {
     const S dx = d.x(), dy = d.y(), dz = d.z();
     std::uint32_t v = start;
@@ -425,19 +410,6 @@ class ConvexHullShapeT {
         tie |= value == best;
       }
       if (next == end) return tie ? plateau_index(d, v, best) : v;
-      if constexpr (kSeed) {
-        if (moves == kHullSeedAfterMoves) {
-          const std::uint32_t seed = seed_index(d);
-          const S seed_value = dot(nodes_[seed].p, dx, dy, dz);
-          if (seed_value > next_value) {
-            v = seed;
-            begin = nodes_[seed].begin;
-            end = nodes_[seed].end;
-            best = seed_value;
-            continue;
-          }
-        }
-      }
       const Edge& e = edges_[next];
       v = e.to;
       begin = e.begin;
@@ -484,6 +456,7 @@ class ConvexHullShapeT {
   // CSR lists: face f's vertex loop, and the faces around vertex v.
   std::vector<std::uint32_t> face_begin_, face_loops_, vertex_face_begin_, vertex_faces_;
   std::size_t seed_cells_ = 0;  // k
+  S seed_half_cells_ = S(0);    // k / 2
   HullStatus status_ = HullStatus::Point;
   bool climbs_ = false;
   S tolerance_ = S(0);
