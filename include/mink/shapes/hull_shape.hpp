@@ -31,12 +31,13 @@
 /// each pair's), so both are read on every query and the climb starts from the higher.
 ///
 /// Measured against reading the table only once the hint's neighbours show that the hint is not
-/// the answer (and, for tables over 32 KB, after two moves), bench/hull_support_bench.cpp, ns per
-/// support: on directions turning 0.02 rad per query the seed's lookup is pure cost, 6 -> 14 at
-/// 128 vertices and 21 -> 26 at 4,096; on random directions 35 -> 25 at 128, 102 -> 39 at
-/// 4,096 and 600-860 -> 120 at 100,000. In GJK's own sequence of directions the seed wins:
-/// intersect of two 128-vertex polytopes apart 128 -> 108, their distance 1.62 -> 1.43 us,
-/// distance of two 4,096-vertex hulls 875 -> 840 (docs/benchmarks.md, stop 44).
+/// the answer (and, for tables over 32 KB, after two moves), bench/hull_support_bench.cpp, median
+/// ns per support: on directions turning 0.02 rad per query the seed's lookup is pure cost, 6.4 ->
+/// 10.7 at 128 vertices and 19.9 -> 23.4 at 4,096; on random directions 34.6 -> 24.0 at 128,
+/// 94 -> 41 at 4,096 and 243 -> 126 at 100,000. In GJK's own sequence of directions the seed
+/// wins: distance of two 4,096-vertex hulls 870 -> 812; gjk_bench's intersect of two 128-vertex
+/// polytopes apart 138 -> 108, their distance 1.96 -> 1.68 us (docs/benchmarks.md, stop 44).
+///
 /// The hint lives in the shape as a relaxed `std::atomic<std::uint32_t>` on its own cache line:
 /// support is `const` and shapes are shared between threads, any start is correct (see Ties) so a
 /// race between threads only changes a start, and a relaxed 32-bit load and store compile to
