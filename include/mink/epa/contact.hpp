@@ -39,6 +39,7 @@
 #include "mink/gjk/distance.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/manifold/clip_box_pair.hpp"
+#include "mink/query/axial_pair.hpp"
 #include "mink/query/point_solid.hpp"
 
 namespace mink {
@@ -236,6 +237,30 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   if (gjk.upper > touch && gjk.lower > touch) {
     cores_apart();
     return result;
+  }
+  if constexpr (detail::kAxialPair<A, B> && !detail::kSegmentCores<A, B>) {
+    // Solids of revolution about parallel axes: EPA in their common plane (query/axial_pair.hpp),
+    // where EPA in space would refine a whole circle of equally good normals.
+    // Shapes so large that the answer overflows are left to EPA, whose rules report it.
+    const auto axial = detail::axial_depth(diff, size, tolerances);
+    const Vec3T<S> axial_a =
+        axial ? pose_a.apply(Vec3T<S>(axial->on_a + radius_a * axial->normal)) : Vec3T<S>::Zero();
+    const Vec3T<S> axial_b =
+        axial ? pose_a.apply(Vec3T<S>(axial->on_b - radius_b * axial->normal)) : Vec3T<S>::Zero();
+    const S axial_depth = axial ? axial->depth + radius_a + radius_b : S(0);
+    if (axial && is_finite(axial_a) && is_finite(axial_b) && std::isfinite(axial_depth) &&
+        std::isfinite(axial->error_bound)) {
+      result.iterations += axial->iterations;
+      result.intersect = true;
+      result.depth = axial_depth;
+      result.error_bound = axial->error_bound;
+      result.normal = pose_a.rotate(axial->normal);
+      result.point_a = axial_a;
+      result.point_b = axial_b;
+      result.normal_chosen = axial->normal_chosen;
+      result.status = axial->status;
+      return result;
+    }
   }
   // The cores meet (or may): EPA on the cores, then add the radii.
   // unit_of(): two spheres' centres 5e-159 apart have a subnormal square, and the plain quotient
