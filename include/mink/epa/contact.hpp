@@ -23,7 +23,11 @@
 /// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric
 /// spheres (the line of centres if the centres differ by rounding, else A's local +z axis),
 /// capsules whose segments cross (the common perpendicular of the segments, sign towards B's side
-/// when it can be told) or overlap along a line (the line of centres' orthogonal part). Coincident
+/// when it can be told) or overlap along a line (the line of centres' orthogonal part), and solids
+/// of revolution on a common axis (coincident or coaxial cylinders, cones, spheroids; a sphere on
+/// a cone's axis) whose way out is not along the axis: the normal then leans towards
+/// orthogonal()'s direction across A's axis (A's local +x when that axis is its z;
+/// query/axial_pair.hpp). Coincident
 /// boxes are not ties of this kind: their Minkowski difference has volume, and the normal is the
 /// axis of a face of least depth (the first in the order A's x, y, z, then B's, when several tie).
 /// A sphere's (or point's) centre inside a box, as deep below two faces (on a diagonal plane of

@@ -157,7 +157,9 @@ std::optional<AxialDepth<typename A::Scalar>> axial_depth(
     e -= e.dot(w) * w;  // the rounding of the projection, along w
     on_axis = !(e.squaredNorm() > S(0.25));
   }
-  if (on_axis) e = orthogonal(w).cross(w);  // any direction orthogonal to w: every one is as good
+  // On the axis every direction orthogonal to w is as good: orthogonal()'s (A's +x for an axis
+  // along z, the common case).
+  if (on_axis) e = orthogonal(w).cross(w);
   e = unit_of(e);
   const V f = w.cross(e);  // normal to the plane: support points are projected into it
 
@@ -305,6 +307,13 @@ std::optional<AxialDepth<typename A::Scalar>> axial_depth(
     out.on_b = best.b + residual;
   }
   out.normal_chosen = on_axis && std::abs(out.normal.dot(e)) > S(0);
+  if (on_axis && out.normal.dot(e) < S(0)) {
+    // The mirror image across the plane through the axis orthogonal to e is as good: answer on
+    // e's side, so that the choice is the documented one.
+    out.normal -= S(2) * out.normal.dot(e) * e;
+    out.on_a -= S(2) * (out.on_a - centre_a).dot(e) * e;
+    out.on_b -= S(2) * (out.on_b - centre_b).dot(e) * e;
+  }
   out.status = converged || upper - lower <= tol.relative_depth * size ? Status::Intersecting
                                                                        : Status::IterationLimit;
   return out;

@@ -24,8 +24,9 @@ struct TolerancesT {
   /// Cap on support evaluations (per GJK run and per EPA run); hitting it gives
   /// Status::IterationLimit. Polytopes need about 3 + log(points) iterations and GJK on curved
   /// shapes a few dozen; EPA on penetrating curved shapes can need hundreds, and where a circle
-  /// of normals is equally good (coaxial cylinders, cones, spheroids) it runs to the cap
-  /// (docs/conventions.md).
+  /// of normals is nearly as good (cylinders, cones or spheroids whose axes are aligned to 1e-6
+  /// but not parallel) it runs to the cap (docs/conventions.md). Parallel axes take the planar
+  /// path of query/axial_pair.hpp, which this caps too.
   int max_iterations = 512;
 };
 

@@ -212,7 +212,9 @@ TEST(ContactAxial, CoincidentShapesSayTheirNormalWasChosen) {
     EXPECT_EQ(r.status, mink::Status::Intersecting);
     EXPECT_NEAR(r.depth, 2.0, 1e-12);
     EXPECT_TRUE(r.normal_chosen);
-    EXPECT_NEAR(r.normal.dot(pose.rotation.col(2)), 0.0, 1e-12);
+    // The documented choice: towards A's local +x (its axis being z).
+    EXPECT_NEAR((r.normal - pose.rotation.col(0)).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((r.point_b - r.point_a + r.depth * r.normal).norm(), 0.0, 1e-12);
     // Two cones of radius 1 and half height 1: the section's least width, 4 / sqrt(5), across a
     // slanted side.
     const mink::Cone cone{1.0, 1.0};
