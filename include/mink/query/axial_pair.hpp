@@ -111,9 +111,11 @@ inline constexpr bool kAxialPair = AxialCore<A>::value&& AxialCore<B>::value;
 template <class S>
 struct AxialDepth {
   Status status = Status::Intersecting;  ///< or IterationLimit (the cap, bounds apart)
-  S depth = S(0);                        ///< the cores' depth (lower bound), >= 0
-  Vec3T<S> normal;                       ///< unit, the direction B moves to separate
-  Vec3T<S> on_a, on_b;                   ///< deepest points of the cores: on_b - on_a = -depth n
+  /// The cores' depth, >= 0: the nearest edge's distance when the planar EPA closed its bracket;
+  /// at the cap, the least support value seen (which separates the shapes), as EPA answers.
+  S depth = S(0);
+  Vec3T<S> normal;      ///< unit, the direction B moves to separate
+  Vec3T<S> on_a, on_b;  ///< deepest points of the cores: on_b - on_a = -depth n
   S error_bound = S(0);
   int iterations = 0;
   bool normal_chosen = false;  ///< the origin on the axis: every normal around it was as good
