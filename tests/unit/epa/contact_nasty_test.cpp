@@ -914,8 +914,8 @@ TEST(ContactNasty, CoaxialCylindersAndCapsulesKeepTheirPointsOnTheShapes) {
     const double size = a.bounding_radius() + b.bounding_radius();
     // B's centre is 1e-9 off A's axis, so the way out is towards that side, shorter by it.
     const Vec3 offset = pa.rotation.transpose() * (pb.translation - pa.translation);
-    const auto r = expect_tied_depth(a, pa, b, pb,
-                                     a.radius + b.radius - std::hypot(offset.x(), offset.y()), size);
+    const auto r = expect_tied_depth(
+        a, pa, b, pb, a.radius + b.radius - std::hypot(offset.x(), offset.y()), size);
     EXPECT_TRUE(on_cylinder(a, pa, r.point_a, 1e-9 * size)) << oracle::describe(r);
     EXPECT_TRUE(on_cylinder(b, pb, r.point_b, 1e-9 * size)) << oracle::describe(r);
   }
