@@ -23,16 +23,16 @@
 /// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric
 /// spheres (the line of centres if the centres differ by rounding, else A's local +z axis),
 /// capsules whose segments cross (the common perpendicular of the segments, sign towards B's side
-/// when it can be told) or overlap along a line (the line of centres' orthogonal part), and solids
-/// of revolution on a common axis (coincident or coaxial cylinders, cones, spheroids; a sphere on
-/// a cone's axis) whose way out is not along the axis: the normal then leans towards
-/// orthogonal()'s direction across A's axis (A's local +x when that axis is its z;
-/// query/axial_pair.hpp). Coincident
-/// boxes are not ties of this kind: their Minkowski difference has volume, and the normal is the
-/// axis of a face of least depth (the first in the order A's x, y, z, then B's, when several tie).
-/// A sphere's (or point's) centre inside a box, as deep below two faces (on a diagonal plane of
-/// the box, or its centre plane) does set `normal_chosen`: the normal is then the first such face
-/// axis in x, y, z order, on the side of the centre, the + side on the centre plane.
+/// when it can be told; in closed form, meeting_segments_normal()) or overlap along a line (the
+/// line of centres' orthogonal part), and solids of revolution on a common axis (coincident or
+/// coaxial cylinders, cones, spheroids; a sphere on a cone's axis) whose way out is not along the
+/// axis: the normal then leans towards orthogonal()'s direction across A's axis (A's local +x when
+/// that axis is its z; query/axial_pair.hpp). Coincident boxes are not ties of this kind: their
+/// Minkowski difference has volume, and the normal is the axis of a face of least depth (the first
+/// in the order A's x, y, z, then B's, when several tie). A sphere's (or point's) centre inside a
+/// box, as deep below two faces (on a diagonal plane of the box, or its centre plane) does set
+/// `normal_chosen`: the normal is then the first such face axis in x, y, z order, on the side of
+/// the centre, the + side on the centre plane.
 ///
 /// Tolerances: distances within `tolerances.relative * size` of zero count as touching
 /// (intersecting, depth 0); EPA stops when its bounds on the core depth are within
@@ -125,6 +125,19 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       detail::contact_from_cores(on_a, on_b, normal, core_distance, radius_a, radius_b, inside,
                                  result, &pose_a.translation);
       result.status = result.intersect ? Status::Intersecting : Status::Separated;
+      return result;
+    }
+    // Segments that meet and are not parallel: their difference is flat, and the common
+    // perpendicular is a best normal (either sign when they cross). The cores touch: both points
+    // at the midpoint of the closest points, and the depth the radii, as EPA's touching cores.
+    const auto core_a = detail::SegmentCore<A>::world(a, pose_a, pose_a.translation);
+    const auto core_b = detail::SegmentCore<B>::world(b, pose_b, pose_a.translation);
+    if (const auto n = detail::meeting_segments_normal(core_a, core_b)) {
+      const Vec3T<S> midpoint = S(0.5) * (on_a + on_b);
+      detail::contact_from_cores(midpoint, midpoint, *n, S(0), radius_a, radius_b, inside, result,
+                                 &pose_a.translation);
+      result.normal_chosen = true;
+      result.status = Status::Intersecting;
       return result;
     }
   }

@@ -24,9 +24,9 @@ struct TolerancesT {
   /// Cap on support evaluations (per GJK run and per EPA run); hitting it gives
   /// Status::IterationLimit. Polytopes need about 3 + log(points) iterations and GJK on curved
   /// shapes a few dozen; EPA on penetrating curved shapes can need hundreds, and where a circle
-  /// of normals is nearly as good (cylinders, cones or spheroids whose axes are aligned to 1e-6
-  /// but not parallel) it runs to the cap (docs/conventions.md). Parallel axes take the planar
-  /// path of query/axial_pair.hpp, which this caps too.
+  /// of normals is nearly as good it runs to the cap (docs/conventions.md). Solids of revolution
+  /// with parallel or nearly parallel axes take the planar path of query/axial_pair.hpp instead,
+  /// which this caps per plane.
   int max_iterations = 512;
 };
 
