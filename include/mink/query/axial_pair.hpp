@@ -27,10 +27,11 @@
 /// directions of a plane are those of its projection onto the plane. So the depth is the least,
 /// over the planes' angle, of the origin's depth in the projection, a planar EPA each
 /// (tilted_axial_depth()). The tilt makes that a small change of a function that was constant
-/// (coincident shapes) or had one smooth minimum (the origin off the axis), which a scan and
-/// Brent's method find; EPA in space refined the nearly round polytope around the circle of
-/// nearly equal normals and ran into its cap (coincident cones tilted by 1e-6 rad: 9e-7 off, 65
-/// us, IterationLimit; now exact to 1e-12, about 400 support calls).
+/// (coincident shapes) or had one smooth minimum (the origin off the axis), apart from notches at
+/// two planes known in advance, which those planes, a scan and Brent's method find; EPA in space
+/// refined the nearly round polytope around the circle of nearly equal normals and ran into its cap
+/// (coincident cones tilted by 1e-6 rad: 9e-7 off, 65 us, IterationLimit; now exact to 1e-12, about
+/// 400 support calls).
 #pragma once
 
 #include <algorithm>
@@ -348,13 +349,13 @@ std::optional<AxialDepth<typename A::Scalar>> parallel_axial_depth(
   return out;
 }
 
-/// Axes tilted by a small angle (see kAxialMaxTilt; B's axis is `axis_b`, unit, through
-/// `centre_b`, A's through `centre_a`, in A's frame):
-/// every direction lies in a plane through A's axis w, so the depth is the least, over those
-/// planes, of the origin's depth in A - B's projection onto the plane (planar_depth()). That depth
-/// is a function of the plane's angle which the tilt makes vary by little; the plane through both
-/// axes and a scan of kAxialScanPlanes planes find the best, and Brent's method (parabolas through
-/// the last three, golden sections where they fail) refines it to 1e-9 radians. The answer is that
+/// Axes tilted by a small angle (see kAxialMaxTilt; B's axis is `axis_b`, unit, through `centre_b`,
+/// A's through `centre_a`, in A's frame): every direction lies in a plane through A's axis w, so
+/// the depth is the least, over those planes, of the origin's depth in A - B's projection onto the
+/// plane (planar_depth()). That depth is a function of the plane's angle which the tilt makes vary
+/// by little; the plane through both axes, the one through A's axis and B's centre and a scan of
+/// kAxialScanPlanes planes find the best, and Brent's method (parabolas through the last three,
+/// golden sections where they fail) refines it to 1e-9 radians (in double). The answer is that
 /// least plane's; `error_bound` adds the spread of the depths Brent's method saw in its final
 /// bracket, an estimate rather than a bound.
 template <class A, class B>
@@ -416,7 +417,8 @@ std::optional<AxialDepth<typename A::Scalar>> tilted_axial_depth(
   // Brent's minimisation on the bracket around the best plane: x the best so far, w_ and v the
   // two before it, [lo, hi] the bracket.
   constexpr S kGolden = S(0.38196601125010515180);  // (3 - sqrt(5)) / 2
-  const S phi_tolerance = S(1e-9);
+  // 1e-9 rad, or what the type can tell apart near pi (float).
+  const S phi_tolerance = std::max(S(1e-9), S(16) * std::numeric_limits<S>::epsilon());
   S lo = phi_best - step, hi = phi_best + step;
   S x = phi_best, w_ = x, v = x;
   S fx = d_best, fw = fx, fv = fx;
