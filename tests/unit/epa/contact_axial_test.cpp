@@ -78,6 +78,20 @@ Real support(const Solid& s, const Pose& pose, const Vec3& n) {
   return Real(n.dot(pose.translation)) + s.section_support(across, along);
 }
 
+/// The least of g over [lo, hi] by golden sections (g unimodal there), at the final midpoint.
+template <class G>
+Real golden_minimum(G&& g, Real lo, Real hi, int steps) {
+  const Real gold = (std::sqrt(Real(5)) - 1) / 2;
+  for (int k = 0; k < steps; ++k) {
+    const Real m1 = hi - gold * (hi - lo), m2 = lo + gold * (hi - lo);
+    if (g(m1) < g(m2))
+      hi = m2;
+    else
+      lo = m1;
+  }
+  return g((lo + hi) / 2);
+}
+
 /// The depth by the one-angle minimum (see the file comment). B's axis is `sign` times A's.
 Real oracle_depth(const Solid& a, const Solid& b, Real sign, Real across, Real along) {
   auto f = [&](Real theta) {
@@ -92,42 +106,34 @@ Real oracle_depth(const Solid& a, const Solid& b, Real sign, Real across, Real a
   for (int i = 0; i <= kSamples; ++i) {
     // Refine around every sample within reach of the best (local minima of a kinked function).
     if (values[i] > best + Real(1e-3)) continue;
-    Real lo = pi * std::max(0, i - 1) / kSamples, hi = pi * std::min(kSamples, i + 1) / kSamples;
-    const Real g = (std::sqrt(Real(5)) - 1) / 2;
-    for (int k = 0; k < 120; ++k) {
-      const Real m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-      if (f(m1) < f(m2))
-        hi = m2;
-      else
-        lo = m1;
-    }
-    best = std::min(best, f((lo + hi) / 2));
+    const Real lo = pi * std::max(0, i - 1) / kSamples,
+               hi = pi * std::min(kSamples, i + 1) / kSamples;
+    best = std::min(best, golden_minimum(f, lo, hi, 120));
   }
   return best;
 }
 
-/// Runs contact() on the concrete mink shape for `s`.
-template <class F>
-auto with_mink(const Solid& s, F&& f) {
+/// The run-time mink shape for `s`: the sweeps go through the library's dispatch, compiled once,
+/// instead of instantiating contact() for every pair of kinds here (RunTimeShapesTakeTheSamePath
+/// checks that the static types give the same answers).
+mink::Shape to_mink(const Solid& s) {
   switch (s.kind) {
     case Kind::Cylinder:
-      return f(mink::Cylinder{s.radius, s.half_height});
+      return mink::Shape::cylinder(s.radius, s.half_height).value();
     case Kind::Cone:
-      return f(mink::Cone{s.radius, s.half_height});
+      return mink::Shape::cone(s.radius, s.half_height).value();
     case Kind::Capsule:
-      return f(mink::Capsule{s.radius, s.half_height});
+      return mink::Shape::capsule(s.radius, s.half_height).value();
     case Kind::Spheroid:
-      return f(mink::Ellipsoid{Vec3(s.radius, s.radius, s.half_height)});
+      return mink::Shape::ellipsoid(Vec3(s.radius, s.radius, s.half_height)).value();
     case Kind::Sphere:
       break;
   }
-  return f(mink::Sphere{s.radius});
+  return mink::Shape::sphere(s.radius).value();
 }
 
 mink::ContactResult contact(const Solid& a, const Pose& pa, const Solid& b, const Pose& pb) {
-  return with_mink(a, [&](const auto& ma) {
-    return with_mink(b, [&](const auto& mb) { return mink::contact(ma, pa, mb, pb); });
-  });
+  return mink::contact(to_mink(a), pa, to_mink(b), pb);
 }
 
 /// Checks contact r of a pair, whose depth is `depth`, in space: its normal gives the depth, its
@@ -251,15 +257,7 @@ Real oracle_depth_in_frame(const Solid& a, const Pose& pa, const Solid& b, const
     for (std::size_t m = 0; m < std::min<std::size_t>(2, minima.size()); ++m) {
       Real l = lo + step * (minima[m].second - 1), h = lo + step * (minima[m].second + 1);
       if (!cyclic) l = std::max(l, lo), h = std::min(h, hi);
-      const Real gold = (std::sqrt(Real(5)) - 1) / 2;
-      for (int k = 0; k < 50; ++k) {
-        const Real m1 = h - gold * (h - l), m2 = l + gold * (h - l);
-        if (g(m1) < g(m2))
-          h = m2;
-        else
-          l = m1;
-      }
-      best = std::min(best, g((l + h) / 2));
+      best = std::min(best, golden_minimum(g, l, h, 50));
     }
     return best;
   };
@@ -392,7 +390,8 @@ TEST(ContactAxial, CoincidentShapesSayTheirNormalWasChosen) {
 }
 
 TEST(ContactAxial, RunTimeShapesTakeTheSamePath) {
-  // The JSON front end's shapes: a cylinder is a Rounded<Cylinder> core there.
+  // The JSON front end's shapes (and the sweeps above): a cylinder is a Rounded<Cylinder> core
+  // there.
   const auto a = mink::Shape::cylinder(1.0, 2.0).value();
   const auto b = mink::Shape::cone(0.5, 0.5).value();
   const Pose pa = oracle::rotated(Vec3(1e3, 0, 0), 0.3, Vec3(1, 0, 1));
@@ -403,6 +402,34 @@ TEST(ContactAxial, RunTimeShapesTakeTheSamePath) {
   EXPECT_LE(r.iterations, 160);  // far below the cap (512)
   // Sideways: 1 + 0.5 (the cone's base is its widest part).
   EXPECT_NEAR(r.depth, 1.5, 1e-12);
+
+  // The static types give the same depths and statuses, parallel, nearly parallel and
+  // coincident; their normals may differ where directions tie (coincident shapes, a spheroid's
+  // flat minimum), so each must give the depth.
+  const Solid cylinder{Kind::Cylinder, 1.0, 2.0}, cone{Kind::Cone, 0.5, 0.5},
+      spheroid{Kind::Spheroid, 0.7, 1.3}, capsule{Kind::Capsule, 0.3, 0.8};
+  const mink::Cylinder typed_cylinder{1.0, 2.0};
+  const mink::Cone typed_cone{0.5, 0.5};
+  const mink::Ellipsoid typed_spheroid{Vec3(0.7, 0.7, 1.3)};
+  const mink::Capsule typed_capsule{0.3, 0.8};
+  for (const double tilt : {0.0, 1e-9, 1e-5, 3e-3}) {
+    for (const double shift : {0.0, 0.1, 0.4}) {
+      SCOPED_TRACE(testing::Message() << "tilt " << tilt << " shift " << shift);
+      Pose pt = pa;
+      pt.rotation = pa.rotation * Eigen::AngleAxisd(tilt, Vec3(1, 1, 0).normalized()).matrix();
+      pt.translation += pa.rotation * Vec3(shift, -0.5 * shift, 0.3 * shift);
+      const auto expect_same = [&](const Solid& sa, const Solid& sb,
+                                   const mink::ContactResult& typed) {
+        const auto run_time = contact(sa, pa, sb, pt);
+        EXPECT_EQ(run_time.status, typed.status);
+        EXPECT_NEAR(run_time.depth, typed.depth, 1e-12);
+        for (const Vec3& n : {run_time.normal, typed.normal})
+          EXPECT_NEAR(double(support(sa, pa, n) + support(sb, pt, -n)), typed.depth, 1e-9);
+      };
+      expect_same(cylinder, cone, mink::contact(typed_cylinder, pa, typed_cone, pt));
+      expect_same(spheroid, capsule, mink::contact(typed_spheroid, pa, typed_capsule, pt));
+    }
+  }
 }
 
 }  // namespace
