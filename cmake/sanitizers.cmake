@@ -6,7 +6,9 @@ if(MINK_SANITIZE)
   # build type's -g): reports keep file and line, and the tests compile about 16 % faster.
   add_compile_options(-O1 -gline-tables-only -fsanitize=address,undefined -fno-sanitize-recover=all
                       -fno-omit-frame-pointer)
-  add_link_options(-fsanitize=address,undefined)
+  # Executables not position independent: the test program's 2.6 million relocations took half
+  # of the 0.25 s that each of its ~280 CTest processes spends starting (0.12 s without).
+  add_link_options(-fsanitize=address,undefined -no-pie)
 endif()
 
 # Files that instantiate many queries compile several times faster at -O0 than at -O1 under the

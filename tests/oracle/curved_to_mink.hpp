@@ -30,4 +30,27 @@ auto with_mink_shape(const CurvedShape& s, F&& f) {
   return f(mink::Sphere{r});
 }
 
+/// The run-time mink::Shape that s describes. Queries on it go through the library's dispatch,
+/// compiled once, where with_mink_shape() makes a test file instantiate a query for every pair of
+/// kinds (minutes of CI's compile time under the sanitizers).
+inline mink::Shape to_mink_shape(const CurvedShape& s) {
+  const double r = static_cast<double>(s.radius), h = static_cast<double>(s.half_height);
+  const mink::Vec3 e = s.extents.cast<double>();
+  switch (s.kind) {
+    case CurvedKind::Sphere:
+      break;
+    case CurvedKind::Box:
+      return mink::Shape::box(e).value();
+    case CurvedKind::Capsule:
+      return mink::Shape::capsule(r, h).value();
+    case CurvedKind::Cylinder:
+      return mink::Shape::cylinder(r, h).value();
+    case CurvedKind::Cone:
+      return mink::Shape::cone(r, h).value();
+    case CurvedKind::Ellipsoid:
+      return mink::Shape::ellipsoid(e).value();
+  }
+  return mink::Shape::sphere(r).value();
+}
+
 }  // namespace oracle

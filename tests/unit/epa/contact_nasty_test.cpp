@@ -1059,22 +1059,17 @@ TEST(ContactNasty, CurvedMinimaReachedByTheDescent) {
     const auto expected = oracle::curved_depth(pair.a, opa, pair.b, opb);
     const double size =
         static_cast<double>(oracle::bounding_radius(pair.a) + oracle::bounding_radius(pair.b));
-    oracle::with_mink_shape(pair.a, [&](const auto& a) {
-      oracle::with_mink_shape(pair.b, [&](const auto& b) {
-        const auto r = mink::contact(a, pa, b, pb);
-        EXPECT_TRUE(oracle::all_finite(r)) << oracle::describe(r);
-        EXPECT_TRUE(r.intersect) << oracle::describe(r);
-        EXPECT_NEAR(r.depth, static_cast<double>(expected.depth), 1e-9 * size)
-            << oracle::describe(r);
-        const V3 n = widen(r.normal);
-        const Real h =
-            oracle::world_support(pair.a, opa, n) + oracle::world_support(pair.b, opb, -n);
-        EXPECT_LE(static_cast<double>(h - expected.depth), 1e-9 * size) << oracle::describe(r);
-        // The answer says how far it may be off, and it is no further.
-        EXPECT_LE(std::abs(r.depth - static_cast<double>(expected.depth)),
-                  r.error_bound + 1e-12 * size);
-      });
-    });
+    const auto r =
+        mink::contact(oracle::to_mink_shape(pair.a), pa, oracle::to_mink_shape(pair.b), pb);
+    EXPECT_TRUE(oracle::all_finite(r)) << oracle::describe(r);
+    EXPECT_TRUE(r.intersect) << oracle::describe(r);
+    EXPECT_NEAR(r.depth, static_cast<double>(expected.depth), 1e-9 * size) << oracle::describe(r);
+    const V3 n = widen(r.normal);
+    const Real h = oracle::world_support(pair.a, opa, n) + oracle::world_support(pair.b, opb, -n);
+    EXPECT_LE(static_cast<double>(h - expected.depth), 1e-9 * size) << oracle::describe(r);
+    // The answer says how far it may be off, and it is no further.
+    EXPECT_LE(std::abs(r.depth - static_cast<double>(expected.depth)),
+              r.error_bound + 1e-12 * size);
   }
 }
 

@@ -33,10 +33,13 @@ TEST(GjkNasty, BoxBooleanNearTouching) {
   for (double tilt : {0.0, 1e-9, 1e-7, 1e-6, 3e-6, 1e-5, 1e-4, 0.3})
     for (const Vec3& axis : {Vec3(1, 1, 1), Vec3(0, 0, 1), Vec3(1, -2, 0.5)})
       poses.push_back(rotated(Vec3::Zero(), tilt, axis));
+  // Random turns besides: fewer under the sanitizers, where the long-double oracle runs ten times
+  // slower (the structured turns above walk the same code paths).
   oracle::Rng rng(4242);
-  for (int i = 0; i < 20; ++i) poses.push_back(Pose::from(Vec3::Zero(), rng.rotation()));
+  const int random_turns = oracle::sweep_count(20, 4);
+  for (int i = 0; i < random_turns; ++i) poses.push_back(Pose::from(Vec3::Zero(), rng.rotation()));
   const Pose pa = rotated(Vec3(1e3, -2, 5), 0.7, Vec3(0.2, 1, 0.3));
-  int checked = 0;
+  int checked = 0, cases = 0;
   for (const Pose& turn : poses) {
     for (const Vec3& dir : {Vec3(1, 1, 1), Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(-0.3, 1, 0.2)}) {
       // B along `dir` from A, first clearly apart, then moved back by the distance plus delta.
@@ -51,6 +54,7 @@ TEST(GjkNasty, BoxBooleanNearTouching) {
                                   oracle::widen(pa.translation)};
         const oracle::WorldBox wb{oracle::widen(b.half_extents), oracle::widen(moved.rotation),
                                   oracle::widen(moved.translation)};
+        ++cases;
         const auto expected =
             oracle::polytope_pair(oracle::box_corners(wa), oracle::box_corners(wb));
         const auto got = mink::intersect(a, pa, b, moved);
@@ -66,7 +70,7 @@ TEST(GjkNasty, BoxBooleanNearTouching) {
       }
     }
   }
-  EXPECT_GT(checked, 500);
+  EXPECT_GE(checked, cases / 2);  // the deltas of 1e-8 and 1e-6 are outside the band
 }
 
 }  // namespace

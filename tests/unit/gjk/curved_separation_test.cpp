@@ -23,7 +23,6 @@ using oracle::CurvedKind;
 using oracle::CurvedShape;
 using oracle::Real;
 using oracle::V3;
-using oracle::with_mink_shape;
 
 struct Case {
   const char* name;
@@ -129,18 +128,14 @@ TEST(CurvedSeparation, MatchesOracle) {
     pose_a.rotation = c.rotation_a;
     Pose pose_b = Pose::from_translation(c.translation_b);
     pose_b.rotation = c.rotation_b;
-    with_mink_shape(c.a, [&](const auto& a) {
-      return with_mink_shape(c.b, [&](const auto& b) {
-        const auto d = mink::distance(a, pose_a, b, pose_b);
-        expect_against_oracle(c, d, d.distance, expected);
-        const auto k = mink::contact(a, pose_a, b, pose_b);
-        expect_against_oracle(c, k, k.distance - k.depth, expected);
-        // One rule for both queries (separate_cores()): the same verdict and status.
-        EXPECT_EQ(d.intersect, k.intersect) << c.name;
-        EXPECT_EQ(d.status, k.status) << c.name;
-        return 0;
-      });
-    });
+    const mink::Shape a = oracle::to_mink_shape(c.a), b = oracle::to_mink_shape(c.b);
+    const auto d = mink::distance(a, pose_a, b, pose_b);
+    expect_against_oracle(c, d, d.distance, expected);
+    const auto k = mink::contact(a, pose_a, b, pose_b);
+    expect_against_oracle(c, k, k.distance - k.depth, expected);
+    // One rule for both queries (separate_cores()): the same verdict and status.
+    EXPECT_EQ(d.intersect, k.intersect) << c.name;
+    EXPECT_EQ(d.status, k.status) << c.name;
   }
 }
 
