@@ -106,7 +106,7 @@ TEST(ContactOracle, HullDepthMatchesPointBox) {
 
 TEST(ContactOracle, PolytopePenetrationMatchesAllTriplesAndHullDistance) {
   const std::uint64_t base = 96000;
-  const int n = oracle::sweep_count(300);
+  const int n = oracle::sweep_count(300, 100);
   int inside = 0;
   for (int i = 0; i < n; ++i) {
     const std::uint64_t seed = base + i;

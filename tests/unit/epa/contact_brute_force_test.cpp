@@ -193,7 +193,7 @@ TEST(ContactBruteForce, NeedlesWithinTheToleranceOfTouching) {
 
 TEST(ContactBruteForce, PolytopePairs) {
   const std::uint64_t base = 400000;
-  const int n = oracle::sweep_count(6000);
+  const int n = oracle::sweep_count(6000, 2000);
   oracle::DepthWorst worst("contact polytope-polytope");
   for (int i = 0; i < n; ++i) {
     polytope_pair_case(base + i, i, worst);

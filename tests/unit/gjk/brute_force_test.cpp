@@ -105,7 +105,7 @@ std::vector<Vec3> random_point_set(Rng& rng, double scale) {
 
 TEST(GjkDistance, PolytopePairMatchesBruteForce) {
   const std::uint64_t base = 20000;
-  const int n = oracle::sweep_count(3000);
+  const int n = oracle::sweep_count(3000, 1000);
   oracle::Worst worst("polytope-polytope");
   for (int i = 0; i < n; ++i) {
     const std::uint64_t seed = base + i;

@@ -170,7 +170,7 @@ TEST(PointPolytope, SpheresAgainstManyFacesMatchBruteForce) {
 /// near corners, edges and faces, outside the polytope (where the corner test and the edge search
 /// decide; inside, the planes alone). Touching counts within 1e-12 of the size, far below.
 TEST(PointPolytope, BooleanAtTouchingMatchesBruteForce) {
-  const int n = oracle::sweep_count(4000);
+  const int n = oracle::sweep_count(4000, 1500);
   int decided = 0;
   for (int i = 0; i < n; ++i) {
     const std::uint64_t seed = 640000 + i;
