@@ -368,7 +368,8 @@ std::optional<AxialDepth<typename A::Scalar>> tilted_axial_depth(
   using V = Vec3T<S>;
   const V e0 = unit_of(V(orthogonal(w).cross(w)));
   const V f0 = w.cross(e0);
-  std::optional<AxialDepth<S>> best;
+  std::optional<AxialDepth<S>> best;  // the least depth seen, on the plane at best_phi
+  S best_phi = S(0);
   int iterations = 0, planes = 0;
   bool failed = false;
   auto depth_at = [&](S phi) {
@@ -380,7 +381,10 @@ std::optional<AxialDepth<typename A::Scalar>> tilted_axial_depth(
       return std::numeric_limits<S>::infinity();
     }
     iterations += d->iterations;
-    if (!best || d->depth < best->depth) best = d;
+    if (!best || d->depth < best->depth) {
+      best = d;
+      best_phi = phi;
+    }
     return d->depth;
   };
   // The plane through both axes first: the support of a cylinder's or cone's flat end is kinked
@@ -392,36 +396,27 @@ std::optional<AxialDepth<typename A::Scalar>> tilted_axial_depth(
   // the scan's spacing, the tilt moves it by little.
   const V across = axis_b - axis_b.dot(w) * w;
   const S phi_axes = std::atan2(across.dot(f0), across.dot(e0));
-  S phi_best = phi_axes;
-  S d_best = depth_at(phi_axes);
+  depth_at(phi_axes);
   if (failed) return std::nullopt;
   const V offset = centre_b - centre_a;
   if (const V radial = offset - offset.dot(w) * w; radial != V::Zero()) {
-    const S phi_centres = std::atan2(radial.dot(f0), radial.dot(e0));
-    if (const S d = depth_at(phi_centres); d < d_best) {
-      d_best = d;
-      phi_best = phi_centres;
-    }
+    depth_at(std::atan2(radial.dot(f0), radial.dot(e0)));
     if (failed) return std::nullopt;
   }
   // Then the scan over half a turn (a plane at phi + pi is the one at phi).
   const S step = S(3.14159265358979323846) / S(kAxialScanPlanes);
   for (int k = 0; k < kAxialScanPlanes; ++k) {
-    const S d = depth_at(phi_axes + S(k) * step);
+    depth_at(phi_axes + S(k) * step);
     if (failed) return std::nullopt;
-    if (d < d_best) {
-      d_best = d;
-      phi_best = phi_axes + S(k) * step;
-    }
   }
   // Brent's minimisation on the bracket around the best plane: x the best so far, w_ and v the
   // two before it, [lo, hi] the bracket.
   constexpr S kGolden = S(0.38196601125010515180);  // (3 - sqrt(5)) / 2
   // 1e-9 rad, or what the type can tell apart near pi (float).
   const S phi_tolerance = std::max(S(1e-9), S(16) * std::numeric_limits<S>::epsilon());
-  S lo = phi_best - step, hi = phi_best + step;
-  S x = phi_best, w_ = x, v = x;
-  S fx = d_best, fw = fx, fv = fx;
+  S lo = best_phi - step, hi = best_phi + step;
+  S x = best_phi, w_ = x, v = x;
+  S fx = best->depth, fw = fx, fv = fx;
   S move = S(0), last_move = S(0);
   bool converged = false;
   while (planes < kAxialMaxPlanes) {
