@@ -255,29 +255,34 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     cores_apart();
     return result;
   }
-  if constexpr (detail::kAxialPair<A, B> && !detail::kSegmentCores<A, B>) {
-    // Solids of revolution about parallel axes: EPA in their common plane (query/axial_pair.hpp),
-    // where EPA in space would refine a whole circle of equally good normals.
-    // Shapes so large that the answer overflows are left to EPA, whose rules report it.
-    const auto axial = detail::axial_depth(diff, size, tolerances);
-    const Vec3T<S> axial_a =
-        axial ? pose_a.apply(Vec3T<S>(axial->on_a + radius_a * axial->normal)) : Vec3T<S>::Zero();
-    const Vec3T<S> axial_b =
-        axial ? pose_a.apply(Vec3T<S>(axial->on_b - radius_b * axial->normal)) : Vec3T<S>::Zero();
-    const S axial_depth = axial ? axial->depth + radius_a + radius_b : S(0);
-    if (axial && is_finite(axial_a) && is_finite(axial_b) && std::isfinite(axial_depth) &&
-        std::isfinite(axial->error_bound)) {
-      result.iterations += axial->iterations;
-      result.intersect = true;
-      result.depth = axial_depth;
-      result.error_bound = axial->error_bound;
-      result.normal = pose_a.rotate(axial->normal);
-      result.point_a = axial_a;
-      result.point_b = axial_b;
-      result.normal_chosen = axial->normal_chosen;
-      result.status = axial->status;
-      return result;
-    }
+  // Solids of revolution about parallel or nearly parallel axes: EPA in planes through an axis
+  // (query/axial_pair.hpp), where EPA in space would refine a whole circle of equally good
+  // normals. False (result untouched) when that path does not apply or does not answer; shapes
+  // so large that the answer overflows are left to EPA, whose rules report it.
+  // Generic, so that pairs without axes never instantiate it.
+  [[maybe_unused]] auto axial_answer = [&](auto max_tilt, bool converged_only) {
+    const auto axial = detail::axial_depth(diff, size, tolerances, max_tilt);
+    if (!axial || (converged_only && axial->status != Status::Intersecting)) return false;
+    const Vec3T<S> axial_a = pose_a.apply(Vec3T<S>(axial->on_a + radius_a * axial->normal));
+    const Vec3T<S> axial_b = pose_a.apply(Vec3T<S>(axial->on_b - radius_b * axial->normal));
+    const S axial_depth = axial->depth + radius_a + radius_b;
+    if (!(is_finite(axial_a) && is_finite(axial_b) && std::isfinite(axial_depth) &&
+          std::isfinite(axial->error_bound)))
+      return false;
+    result.iterations += axial->iterations;
+    result.intersect = true;
+    result.depth = axial_depth;
+    result.error_bound = axial->error_bound;
+    result.normal = pose_a.rotate(axial->normal);
+    result.point_a = axial_a;
+    result.point_b = axial_b;
+    result.normal_chosen = axial->normal_chosen;
+    result.status = axial->status;
+    return true;
+  };
+  constexpr bool kAxial = detail::kAxialPair<A, B> && !detail::kSegmentCores<A, B>;
+  if constexpr (kAxial) {
+    if (axial_answer(S(detail::kAxialMaxTilt), false)) return result;
   }
   // The cores meet (or may): EPA on the cores, then add the radii.
   // unit_of(): two spheres' centres 5e-159 apart have a subnormal square, and the plain quotient
@@ -330,6 +335,12 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   result.normal_chosen = epa.degenerate;
   result.status =
       epa.status == Status::IterationLimit ? Status::IterationLimit : Status::Intersecting;
+  if constexpr (kAxial) {
+    // EPA stopped at its cap (a spheroid against a cone or capsule, axes tilted past
+    // kAxialMaxTilt: a band of nearly equal normals): the planes through A's axis, where they
+    // converge.
+    if (result.status == Status::IterationLimit) axial_answer(S(detail::kAxialFallbackTilt), true);
+  }
   return result;
 }
 

@@ -342,7 +342,7 @@ TEST(ContactAxial, NearlyParallelAxesMatchTheTwoAngleMinimum) {
 
 TEST(ContactAxial, TiltedAxesMatchTheTwoAngleMinimum) {
   // 3e-3 to 0.3 rad: on both sides of kAxialMaxTilt, where EPA in space takes over.
-  expect_tilted_pairs_exact(20261201, -2.5, -0.5, oracle::sweep_count(60, 8));
+  expect_tilted_pairs_exact(20261201, -2.5, -0.3, oracle::sweep_count(60, 8));
 }
 
 TEST(ContactAxial, NearlyParallelCrossingCapsulesAreExact) {
