@@ -10,7 +10,7 @@
 // and a golden-section search around the best samples. The answer is also checked in space
 // against the shapes' support functions: its normal must give its depth, its points must be the
 // shapes' extreme points along it, and moving B by the depth along it must just separate them.
-// Axes tilted by 1e-11 to 3e-3 rad are checked against a minimum over two angles (the least, over
+// Axes tilted by 1e-11 to 0.5 rad are checked against a minimum over two angles (the least, over
 // the planes through an axis, of the least over the directions in the plane), and needles
 // crossing at small angles against the sum of their radii.
 #include <gtest/gtest.h>
@@ -341,7 +341,8 @@ TEST(ContactAxial, NearlyParallelAxesMatchTheTwoAngleMinimum) {
 }
 
 TEST(ContactAxial, TiltedAxesMatchTheTwoAngleMinimum) {
-  // 3e-3 to 0.3 rad: on both sides of kAxialMaxTilt, where EPA in space takes over.
+  // 3e-3 to 0.5 rad: on both sides of kAxialMaxTilt, where EPA in space takes over, and up to
+  // kAxialFallbackTilt, where the planes answer after EPA stops at its cap.
   expect_tilted_pairs_exact(20261201, -2.5, -0.3, oracle::sweep_count(60, 8));
 }
 
