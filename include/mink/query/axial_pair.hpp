@@ -44,6 +44,7 @@
 #include <optional>
 
 #include "mink/gjk/gjk.hpp"
+#include "mink/gjk/support_descent.hpp"
 #include "mink/math/orthogonal.hpp"
 #include "mink/query/status.hpp"
 #include "mink/query/tolerances.hpp"
@@ -493,6 +494,34 @@ std::optional<AxialDepth<typename A::Scalar>> tilted_axial_depth(
   return out;
 }
 
+/// An answer that stopped at a cap (a section nearly as round as a circle about the origin, in
+/// one plane or several), lowered to the least support value near its normal by descent over all
+/// directions (gjk/support_descent.hpp), as EPA in space polishes its own: the depth only goes
+/// down, status and bound stay. Each plane's answer at the cap is the least support value among
+/// the directions its polygon tried, which on a nearly round section is off by about the square
+/// of their spacing (two coincident spheroids 0.3 % from a sphere, tilted 5.5e-3 rad: 2.4e-8 of
+/// the size).
+template <class A, class B>
+void polish_capped_depth(const CoreDifference<A, B>& diff, typename A::Scalar size,
+                         const TolerancesT<typename A::Scalar>& tol,
+                         AxialDepth<typename A::Scalar>& out) {
+  using S = typename A::Scalar;
+  SupportMinimum<S> least;
+  SimplexVertexT<S> start;
+  diff.support(out.normal, start);
+  least.offer(out.normal.dot(start.w), out.normal, start);
+  int iterations = 1;
+  const bool finite = descend_support(diff, out.depth - out.error_bound, tol.relative_depth * size,
+                                      tol.max_iterations, iterations, least);
+  out.iterations += iterations;
+  if (!finite || !(least.value < out.depth)) return;
+  const Vec3T<S> residual = S(0.5) * (least.vertex.a - least.vertex.b - least.value * least.normal);
+  out.depth = least.value;
+  out.normal = least.normal;
+  out.on_a = least.vertex.a - residual;
+  out.on_b = least.vertex.b + residual;
+}
+
 /// The depth of the cores of diff.a and diff.b (B posed by diff.rotation, diff.translation in A's
 /// frame) when both are solids of revolution about parallel axes or axes tilted by at most
 /// `max_tilt` radians (see the file comment); nothing when they are not, or when a planar problem
@@ -513,18 +542,24 @@ std::optional<AxialDepth<typename A::Scalar>> axial_depth(
   const V axis_b_in_a = diff.rotation * axis_b.axis;
   const V w = axis_a.kind == AxisKind::Line ? axis_a.axis : axis_b_in_a;
   // The angle between the axes moves B's points by at most tilt times its bounding radius.
+  S tilt_error = S(0);
+  std::optional<AxialDepth<S>> out;
   if (axis_a.kind == AxisKind::Line && axis_b.kind == AxisKind::Line) {
     const S tilt = w.cross(axis_b_in_a).norm();
-    const S tilt_error = tilt * std::max(diff.a.bounding_radius(), diff.b.bounding_radius());
+    tilt_error = tilt * std::max(diff.a.bounding_radius(), diff.b.bounding_radius());
     if (!(tilt_error <= S(0.01) * tol.relative_depth * size)) {
       if (!(tilt <= max_tilt)) return std::nullopt;
-      return tilted_axial_depth(diff, w, axis_b_in_a, centre_a, centre_b, size, tol);
+      out = tilted_axial_depth(diff, w, axis_b_in_a, centre_a, centre_b, size, tol);
+      if (!out) return out;
     }
-    auto out = parallel_axial_depth(diff, w, centre_a, centre_b, size, tol);
-    if (out) out->error_bound += tilt_error;
-    return out;
   }
-  return parallel_axial_depth(diff, w, centre_a, centre_b, size, tol);
+  if (!out) {
+    out = parallel_axial_depth(diff, w, centre_a, centre_b, size, tol);
+    if (!out) return out;
+    out->error_bound += tilt_error;
+  }
+  if (out->status == Status::IterationLimit) polish_capped_depth(diff, size, tol, *out);
+  return out;
 }
 
 }  // namespace mink::detail
