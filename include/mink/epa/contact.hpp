@@ -260,15 +260,18 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   // normals. False (result untouched) when that path does not apply or does not answer; shapes
   // so large that the answer overflows are left to EPA, whose rules report it.
   // Generic, so that pairs without axes never instantiate it.
-  [[maybe_unused]] auto axial_answer = [&](auto max_tilt, bool converged_only) {
-    const auto axial = detail::axial_depth(diff, size, tolerances, max_tilt);
-    if (!axial || (converged_only && axial->status != Status::Intersecting)) return false;
+  // `ceiling`: when finite, the answer is taken only if it converged and is no deeper than that.
+  [[maybe_unused]] auto axial_answer = [&](auto min_tilt, auto max_tilt, S ceiling) {
+    const auto axial = detail::axial_depth(diff, size, tolerances, max_tilt, min_tilt);
+    const bool checked = std::isfinite(ceiling);
+    if (!axial || (checked && axial->status != Status::Intersecting)) return false;
     const Vec3T<S> axial_a = pose_a.apply(Vec3T<S>(axial->on_a + radius_a * axial->normal));
     const Vec3T<S> axial_b = pose_a.apply(Vec3T<S>(axial->on_b - radius_b * axial->normal));
     const S axial_depth = axial->depth + radius_a + radius_b;
     if (!(is_finite(axial_a) && is_finite(axial_b) && std::isfinite(axial_depth) &&
           std::isfinite(axial->error_bound)))
       return false;
+    if (checked && !(axial_depth <= ceiling)) return false;
     result.iterations += axial->iterations;
     result.intersect = true;
     result.depth = axial_depth;
@@ -282,7 +285,8 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   };
   constexpr bool kAxial = detail::kAxialPair<A, B> && !detail::kSegmentCores<A, B>;
   if constexpr (kAxial) {
-    if (axial_answer(S(detail::kAxialMaxTilt), false)) return result;
+    if (axial_answer(S(-1), S(detail::kAxialMaxTilt), std::numeric_limits<S>::infinity()))
+      return result;
   }
   // The cores meet (or may): EPA on the cores, then add the radii.
   // unit_of(): two spheres' centres 5e-159 apart have a subnormal square, and the plain quotient
@@ -336,10 +340,15 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   result.status =
       epa.status == Status::IterationLimit ? Status::IterationLimit : Status::Intersecting;
   if constexpr (kAxial) {
-    // EPA stopped at its cap (a spheroid against a cone or capsule, axes tilted past
-    // kAxialMaxTilt: a band of nearly equal normals): the planes through A's axis, where they
-    // converge.
-    if (result.status == Status::IterationLimit) axial_answer(S(detail::kAxialFallbackTilt), true);
+    // EPA stopped at its cap (a spheroid against a cone, capsule or spheroid, axes tilted past
+    // kAxialMaxTilt: a band of nearly equal normals). Its polished depth is a support value of
+    // A - B, so no less than the true depth, and so is each plane's converged depth: the planes
+    // through A's axis answer when they converge no deeper than EPA (within its tolerance). A
+    // scan that missed the least plane comes out deeper and is ignored. Smaller tilts had their
+    // turn above.
+    if (result.status == Status::IterationLimit)
+      axial_answer(S(detail::kAxialMaxTilt), S(detail::kAxialFallbackTilt),
+                   result.depth + tolerances.relative_depth * size);
   }
   return result;
 }

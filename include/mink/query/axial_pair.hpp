@@ -34,8 +34,8 @@
 /// 400 support calls).
 ///
 /// Tilted further, EPA in space answers first, in a third of the time, but a spheroid against a
-/// cone or capsule (a nearly round section: a band of nearly equal normals) can still stop it at
-/// its cap; then the same planes do, up to kAxialFallbackTilt.
+/// cone, capsule or spheroid (a nearly round section: a band of nearly equal normals) can still
+/// stop it at its cap; then the same planes do (kAxialFallbackTilt).
 #pragma once
 
 #include <algorithm>
@@ -145,12 +145,13 @@ inline constexpr int kAxialMaxVertices = 128;
 /// planes through A's axis is then no longer a small change of a constant, and could have minima
 /// narrower than the scan's spacing.
 inline constexpr double kAxialMaxTilt = 1e-2;
-/// After EPA in space stops at its cap, the planes through A's axis answer up to this tilt
-/// (radians): a sweep of random pairs tilted by 3e-3 to 0.5 rad matches a dense two-angle oracle
-/// to 1e-9 of the size (tests/unit/epa/contact_axial_test.cpp). Further from parallel the least
-/// depth over the planes could have minima narrower than the scan's spacing; EPA's capped answer
-/// stands there, with its bound.
-inline constexpr double kAxialFallbackTilt = 0.5;
+/// After EPA in space stops at its cap, the planes through A's axis answer up to this tilt: at
+/// any tilt, since the tilt is measured as the sine of the axes' angle. Far from parallel the
+/// least depth over the planes can have minima narrower than the scan's spacing, so contact()
+/// takes the planes' answer only where it is no deeper than EPA's polished one (both are support
+/// values of A - B, never below the true depth). Random pairs tilted by 3e-3 to 1.57 rad match a
+/// dense two-angle oracle to 1e-9 of the size (tests/unit/epa/contact_axial_test.cpp).
+inline constexpr double kAxialFallbackTilt = 1.0;
 /// Planes the tilted path scans (over half a turn) before refining the best, and its cap on
 /// planes in all.
 inline constexpr int kAxialScanPlanes = 12;
@@ -523,15 +524,17 @@ void polish_capped_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
 }
 
 /// The depth of the cores of diff.a and diff.b (B posed by diff.rotation, diff.translation in A's
-/// frame) when both are solids of revolution about parallel axes or axes tilted by at most
-/// `max_tilt` radians (see the file comment); nothing when they are not, or when a planar problem
-/// has no area or shows the cores apart (the caller's EPA answers then). `size`: the sum of the
-/// bounding radii.
+/// frame) when both are solids of revolution about axes tilted by more than `min_tilt` and at
+/// most `max_tilt` (the sine of their angle, which is the angle in radians for the small tilts
+/// this path is for; the default range takes parallel axes too; see the file comment);
+/// nothing when they are not, or when a planar problem has no area or shows the cores apart (the
+/// caller's EPA answers then). `size`: the sum of the bounding radii.
 template <class A, class B>
 std::optional<AxialDepth<typename A::Scalar>> axial_depth(
     const CoreDifference<A, B>& diff, typename A::Scalar size,
     const TolerancesT<typename A::Scalar>& tol,
-    typename A::Scalar max_tilt = typename A::Scalar(kAxialMaxTilt)) {
+    typename A::Scalar max_tilt = typename A::Scalar(kAxialMaxTilt),
+    typename A::Scalar min_tilt = typename A::Scalar(-1)) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
   const CoreAxis<S> axis_a = AxialCore<A>::of(diff.a), axis_b = AxialCore<B>::of(diff.b);
@@ -542,10 +545,12 @@ std::optional<AxialDepth<typename A::Scalar>> axial_depth(
   const V axis_b_in_a = diff.rotation * axis_b.axis;
   const V w = axis_a.kind == AxisKind::Line ? axis_a.axis : axis_b_in_a;
   // The angle between the axes moves B's points by at most tilt times its bounding radius.
+  const bool two_lines = axis_a.kind == AxisKind::Line && axis_b.kind == AxisKind::Line;
+  const S tilt = two_lines ? w.cross(axis_b_in_a).norm() : S(0);
+  if (!(tilt > min_tilt)) return std::nullopt;
   S tilt_error = S(0);
   std::optional<AxialDepth<S>> out;
-  if (axis_a.kind == AxisKind::Line && axis_b.kind == AxisKind::Line) {
-    const S tilt = w.cross(axis_b_in_a).norm();
+  if (two_lines) {
     tilt_error = tilt * std::max(diff.a.bounding_radius(), diff.b.bounding_radius());
     if (!(tilt_error <= S(0.01) * tol.relative_depth * size)) {
       if (!(tilt <= max_tilt)) return std::nullopt;
