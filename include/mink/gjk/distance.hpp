@@ -25,7 +25,7 @@
 ///
 /// Pairs of spheres, capsules, points and segments (and their Rounded versions) take a closed form
 /// instead of GJK (segment_cores.hpp): exact to rounding, 0 iterations; so do spheres and points
-/// against boxes and cylinders (query/point_solid.hpp). Pairs of boxes (and
+/// against boxes, cylinders and ellipsoids (query/point_solid.hpp). Pairs of boxes (and
 /// rounded boxes) report 0 iterations too when the separating axis test proves them overlapping,
 /// or when its best axis gives their closest points in closed form (a vertex, edge or face over a
 /// face, or two crossing edges: box_box_closest() in query/box_box.hpp). For other cores with no
@@ -137,7 +137,8 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     return result;
   }
   if constexpr (detail::kPointSolid<A, B>) {
-    // A sphere or point against a box, cylinder or small polytope: closed form, no iteration.
+    // A sphere or point against a box, cylinder, ellipsoid or small polytope: closed form, no
+    // iteration.
     if (const auto local = detail::point_solid_local(a, pose_a, b, pose_b)) {
       const S radius_a = a.core_radius(), radius_b = b.core_radius();
       if (!(std::abs(local->signed_distance) <= std::numeric_limits<S>::max())) {

@@ -12,7 +12,7 @@
 /// pairs of boxes (and rounded boxes) that the separating axis test decides
 /// (query/box_box.hpp: when the cores overlap or are clearly apart, and no two edges are parallel
 /// to within 1e-6 without being exactly parallel; a point of one core within reach of the other
-/// also proves an overlap), and spheres and points against boxes and cylinders
+/// also proves an overlap), and spheres and points against boxes, cylinders and ellipsoids
 /// (query/point_solid.hpp).
 #pragma once
 
@@ -82,7 +82,8 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     return result;
   }
   if constexpr (detail::kPointSolid<A, B>) {
-    // A sphere or point against a box, cylinder or small polytope: closed form, no iteration.
+    // A sphere or point against a box, cylinder, ellipsoid or small polytope: closed form, no
+    // iteration.
     if (const auto gap = detail::point_solid_gap(a, pose_a, b, pose_b, reach)) {
       detail::intersect_from_core_gap(*gap, reach, result);
       return result;

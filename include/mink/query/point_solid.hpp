@@ -1,12 +1,14 @@
 /// @file point_solid.hpp
-/// A point core (Sphere, Point, and their Rounded versions) against a box, cylinder or small
-/// polytope core (Box, Cylinder, Polytope, and their Rounded versions) in closed form: the
-/// solid's point nearest to the point core is the point clamped to the solid, and a point inside
-/// leaves through the nearest part of the surface (a box's nearest face; a cylinder's side or
-/// nearer cap; a polytope's nearest face plane). intersect(), distance() and contact() take this
-/// path for such pairs, in either order: exact to rounding, 0 iterations, and for a sphere inside
-/// the solid no EPA (whose answer for a sphere near a cylinder's axis, where every radial
-/// direction is nearly as good, could only be bracketed). A polytope takes it once it has its
+/// A point core (Sphere, Point, and their Rounded versions) against a box, cylinder, ellipsoid or
+/// small polytope core (Box, Cylinder, Ellipsoid, Polytope, and their Rounded versions) in closed
+/// form: the solid's point nearest to the point core is the point clamped to the solid, and a point
+/// inside leaves through the nearest part of the surface (a box's nearest face; a cylinder's side
+/// or nearer cap; a polytope's nearest face plane). An ellipsoid's nearest point, inside or out, is
+/// a one-dimensional root, found to rounding by Newton's method. intersect(), distance() and
+/// contact() take this path for such pairs, in either order: exact to rounding, 0 iterations, and
+/// for a sphere inside the solid no EPA (whose answer for a sphere near a cylinder's axis, or deep
+/// in a nearly round ellipsoid, where every direction is nearly as good, could only be
+/// bracketed). A polytope takes it once it has its
 /// face planes (PolytopeT::face_planes()), and leaves to GJK the few answers the planes cannot
 /// give exactly.
 #pragma once
@@ -22,6 +24,7 @@
 #include "mink/math/pose.hpp"
 #include "mink/query/box_box.hpp"
 #include "mink/shapes/cylinder.hpp"
+#include "mink/shapes/ellipsoid.hpp"
 #include "mink/shapes/support_scan.hpp"
 
 namespace mink {
@@ -524,6 +527,130 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
       gap -= (gap.dot(nearest.edge) / nearest.edge.squaredNorm()) * nearest.edge;
     out.signed_distance = std::sqrt(nearest.distance_sq);
     out.out_of_solid = unit_of(gap);
+    return out;
+  }
+};
+
+/// An ellipsoid (semi-axes `radii`, all positive and within 1e6 of one another; else GJK and EPA
+/// answer): its point nearest to p, outside or inside, where the outward normal x / radii^2 is
+/// along p - x. With y = |p| coordinate by coordinate (the answer is mirrored back) and
+/// x_i = r_i^2 y_i / (r_i^2 + t), t is the root of F(t) = sum (r_i y_i / (r_i^2 + t))^2 - 1
+/// beyond -min r_i^2 (t > 0 outside, < 0 inside), which is unique there and gives the nearest point
+/// (Eberly, "Distance from a point to an ellipse, an ellipsoid, or a hyperellipsoid"). Solved for
+/// u = t + min r_i^2, whose offsets r_i^2 - min r_i^2 are exact (0 on the shortest axes), by
+/// Newton's method from the left: F is convex and decreasing in u, so each step stays below the
+/// root. When p lies on the plane of the shortest axes and F has no root there (inside, near the
+/// centre), the nearest point leaves that plane: u = 0, and the rest of the unit norm goes to the
+/// first shortest axis, on its + side (a tie with its mirror image). Nothing (GJK and EPA answer)
+/// when the iteration cap is hit or coordinates are beyond 2^(max_exponent / 4) of the largest
+/// radius.
+template <class S>
+struct SolidCore<EllipsoidT<S>> : std::true_type {
+  using Core = EllipsoidT<S>;
+  static constexpr S kLargest = power_of_two<S>(std::numeric_limits<S>::max_exponent / 4);
+  static constexpr int kMaxSteps = 128;
+
+  static const Core* core(const EllipsoidT<S>& e) {
+    const S smallest = e.radii.minCoeff(), largest = e.radii.maxCoeff();
+    return smallest > S(0) && largest <= S(1e6) * smallest ? &e : nullptr;
+  }
+  static bool inside(const Core& e, const Vec3T<S>& p) {
+    return p.cwiseQuotient(e.radii).squaredNorm() <= S(1);
+  }
+  static std::optional<Vec3T<S>> gap(const Core& e, const Vec3T<S>& p, S) {
+    if (inside(e, p)) return Vec3T<S>::Zero();
+    const auto l = local(e, p);
+    if (!l) return std::nullopt;
+    return Vec3T<S>(p - l->on_solid);
+  }
+  static std::optional<PointSolidLocal<S>> local(const Core& e, const Vec3T<S>& p) {
+    // In units of the largest radius, so that the squares below neither overflow nor underflow.
+    const S scale = e.radii.maxCoeff();
+    const Vec3T<S> r = e.radii / scale, y = p.cwiseAbs() / scale;
+    if (!(y.maxCoeff() <= kLargest)) return std::nullopt;
+    const S r_min = r.minCoeff(), m = r_min * r_min;
+    Vec3T<S> d, a;  // d_i = r_i^2 - min r^2 (exactly 0 on the shortest axes), a_i = r_i y_i
+    for (int i = 0; i < 3; ++i) {
+      d[i] = r[i] == r_min ? S(0) : r[i] * r[i] - m;
+      a[i] = r[i] * y[i];
+    }
+    Vec3T<S> x, g;  // the nearest point (first octant), and the outward normal's direction there
+    bool off_plane = false;
+    // The root leaves u > 0 only when p lies on the shortest axes' plane (a_i = 0 wherever d_i =
+    // 0) and F(0) <= 0 there.
+    S f0 = S(-1);
+    for (int i = 0; i < 3; ++i) {
+      if (d[i] > S(0)) {
+        const S q = a[i] / d[i];
+        f0 += q * q;
+      } else if (a[i] > S(0)) {
+        f0 = std::numeric_limits<S>::infinity();
+        break;
+      }
+    }
+    if (!(f0 > S(0))) {
+      off_plane = true;
+      S rest = S(1);
+      int first_short = -1;
+      for (int i = 0; i < 3; ++i) {
+        if (d[i] > S(0)) {
+          x[i] = r[i] * a[i] / d[i];
+          const S q = x[i] / r[i];
+          rest -= q * q;
+        } else {
+          x[i] = S(0);
+          if (first_short < 0) first_short = i;
+        }
+      }
+      x[first_short] = r_min * std::sqrt(std::max(S(0), rest));
+      g = x.cwiseQuotient(r.cwiseProduct(r));
+    } else {
+      // F(u) = sum (a_i / (d_i + u))^2 - 1. F(lo) >= 0 (the term of the largest a_i - d_i is
+      // 1 there), F(|a|) <= 0 (every term is at most a_i^2 / |a|^2).
+      S u = S(0);
+      for (int i = 0; i < 3; ++i) u = std::max(u, a[i] - d[i]);
+      const S hi = a.norm();
+      constexpr S kEps = std::numeric_limits<S>::epsilon();
+      bool converged = false;
+      for (int step = 0; step < kMaxSteps; ++step) {
+        S f = S(-1), slope = S(0);
+        for (int i = 0; i < 3; ++i) {
+          if (!(a[i] > S(0))) continue;
+          const S q = a[i] / (d[i] + u);
+          f += q * q;
+          slope -= S(2) * q * q / (d[i] + u);
+        }
+        // Past the root (rounding), or a step below the rounding of u: done.
+        const S move = f > S(0) && slope < S(0) ? -f / slope : S(0);
+        if (!(move > S(4) * kEps * u)) {
+          converged = true;
+          break;
+        }
+        u = std::min(u + move, hi);
+      }
+      if (!converged) return std::nullopt;
+      for (int i = 0; i < 3; ++i) {
+        g[i] = y[i] / (d[i] + u);
+        x[i] = r[i] * r[i] * g[i];
+      }
+    }
+    // Back to p's octant and scale.
+    PointSolidLocal<S> out;
+    out.p = p;
+    Vec3T<S> normal;
+    for (int i = 0; i < 3; ++i) {
+      const S sign = p[i] < S(0) ? S(-1) : S(1);
+      out.on_solid[i] = sign * x[i] * scale;
+      normal[i] = sign * g[i];
+    }
+    out.out_of_solid = unit_of(normal);
+    const bool in = inside(e, p);
+    const Vec3T<S> gap = p - out.on_solid;
+    out.signed_distance = in ? -gap.norm() : gap.norm();
+    out.tie = in && off_plane;
+    if (!is_finite(out.on_solid) || !is_finite(out.out_of_solid) ||
+        !std::isfinite(out.signed_distance))
+      return std::nullopt;
     return out;
   }
 };
