@@ -157,6 +157,54 @@ inline constexpr double kAxialFallbackTilt = 1.0;
 inline constexpr int kAxialScanPlanes = 12;
 inline constexpr int kAxialMaxPlanes = 64;
 
+/// Moves a (a point of A's support feature along the unit n) and b (of B's, along -n) so that
+/// b = a - depth n. Their difference across n, r, comes from a plane's projection, which drops
+/// what lies off the plane: a cone's apex against a cylinder's cap off the plane, r is the
+/// apex's offset, and shared evenly it put both points off their shapes (0.09 off a cone of
+/// 0.5). Each point moves along r only as far as its support feature reaches that way: the
+/// support along n tilted by 1e-6 rad away from r gives the farthest point of A's feature
+/// against r and of B's with it (a vertex does not move; a cap or a side moves up to its rim or
+/// end), and not farther than keeps it within `slack` (unit: length) of its support plane. On a
+/// curved surface the tilt lets a point move by 1e-6 of its radius of curvature, which leaves it
+/// off the surface by 5e-13 of that radius.
+template <class A, class B>
+void place_on_features(const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& n,
+                       typename A::Scalar depth, typename A::Scalar slack,
+                       Vec3T<typename A::Scalar>& a, Vec3T<typename A::Scalar>& b) {
+  using S = typename A::Scalar;
+  using V = Vec3T<S>;
+  V r = a - b - depth * n;
+  r -= r.dot(n) * n;
+  const S length = r.norm();
+  if (!(length > S(0)) || !std::isfinite(length)) return;
+  const V u = r / length;
+  SimplexVertexT<S> reach;
+  diff.support(unit_of(V(n - S(1e-6) * u)), reach);
+  // How far each feature reaches across n; a feature that also falls away along n (a cap tilted
+  // from n, whose support point is one rim point) only as far as that keeps the fall within
+  // `slack`.
+  auto usable = [slack](S across, S fall) {
+    across = std::max(S(0), across);
+    fall = std::abs(fall);
+    return fall <= slack ? across : across * (slack / fall);
+  };
+  const S reach_a = usable((a - reach.a).dot(u), (a - reach.a).dot(n));  // against u
+  const S reach_b = usable((reach.b - b).dot(u), (reach.b - b).dot(n));  // along u
+  S move_a = S(0.5) * length, move_b = S(0.5) * length;
+  if (reach_a + reach_b >= length) {
+    // In proportion to the reaches: the same split with A and B swapped.
+    move_a = length * (reach_a / (reach_a + reach_b));
+    move_b = length - move_a;
+  } else {
+    // Short of the tolerance: each to its reach, the rest shared.
+    const S rest = S(0.5) * (length - reach_a - reach_b);
+    move_a = reach_a + rest;
+    move_b = reach_b + rest;
+  }
+  a -= move_a * u;
+  b += move_b * u;
+}
+
 /// The depth of the origin in A - B seen in the plane span(e, w) (e, w orthonormal, in A's frame):
 /// EPA in two dimensions on the projection of the cores' difference onto that plane, whose
 /// support value along a direction of the plane is A - B's. With `section` (parallel solids of
@@ -315,11 +363,19 @@ std::optional<AxialDepth<typename A::Scalar>> planar_depth(
     b = best.b;
   }
   // What is left of a - b - depth n (the offset of the support point along the section at the
-  // cap; off the plane, on a projection) is split between the points so that
-  // on_b - on_a = -depth n holds.
-  const V residual = S(0.5) * (a - b - out.depth * out.normal);
-  out.on_a = a - residual;
-  out.on_b = b + residual;
+  // cap; off the plane, on a projection) is shared between the points so that
+  // on_b - on_a = -depth n holds. On a section the projected points are the cores' own (each is
+  // symmetric about the plane); off it, each point moves only as far as its support feature
+  // reaches (place_on_features()).
+  if (section) {
+    const V residual = S(0.5) * (a - b - out.depth * out.normal);
+    out.on_a = a - residual;
+    out.on_b = b + residual;
+  } else {
+    place_on_features(diff, out.normal, out.depth, tol.relative * size, a, b);
+    out.on_a = a;
+    out.on_b = b;
+  }
   out.status = converged || upper - lower <= tol.relative_depth * size ? Status::Intersecting
                                                                        : Status::IterationLimit;
   return out;

@@ -364,6 +364,46 @@ TEST(ContactAxial, WidelyTiltedAxesMatchTheTwoAngleMinimum) {
   expect_tilted_pairs_exact(20261129, -0.3, std::log10(M_PI / 2), oracle::sweep_count(60, 8));
 }
 
+/// How far the world point x lies outside a cylinder or cone (a Solid of those kinds) at pose.
+double outside_solid(const Solid& s, const Pose& pose, const Vec3& x) {
+  const Vec3 p = pose.rotation.transpose() * (x - pose.translation);
+  const double h = s.half_height;
+  const double radius = s.kind == Kind::Cone ? s.radius * (h - p.z()) / (2 * h) : s.radius;
+  return std::max({std::hypot(p.x(), p.y()) - radius, std::abs(p.z()) - h, 0.0});
+}
+
+TEST(ContactAxial, TiltedPairsKeepTheirPointsOnTheShapes) {
+  // A cone's apex pressed into another's base, and a cylinder's tilted cap on a cap (found by an
+  // adversarial sweep): depth and normal were exact, but the plane's projection dropped the
+  // apex's offset from the plane, and sharing it between the points put B's 0.09 off B (and
+  // the rim point 3e-8 below the tilted cap). Each point now moves only within its feature.
+  const Solid big_cone{Kind::Cone, 1, 1}, cone{Kind::Cone, 0.5, 0.5};
+  const Solid tall{Kind::Cylinder, 1, 2}, cylinder{Kind::Cylinder, 0.5, 1};
+  struct Case {
+    Solid a, b;
+    Vec3 t;
+    double tilt;
+  };
+  // Not yet: the same cylinders 0.2 deep, tilted 1e-2 rad, whose rim point comes from a chord of
+  // the plane's polygon, 1.2e-6 inside the rim and so 1.2e-8 outside the tilted cap.
+  for (const Case& c : {Case{big_cone, cone, Vec3(0.2, 0.1, -1.45), 2e-6},
+                        Case{tall, cylinder, Vec3(0.2, 0.1, 3.0000001), 1e-5}}) {
+    const Pose pa{};
+    Pose pb = Pose::from(c.t, Quat(Eigen::AngleAxisd(c.tilt, Vec3::UnitX())));
+    if (c.a.kind == Kind::Cone) pb.rotation = pb.rotation * Eigen::AngleAxisd(M_PI, Vec3::UnitX());
+    const double size = c.a.size() + c.b.size();
+    for (const bool swap : {false, true}) {
+      SCOPED_TRACE(testing::Message() << "tilt " << c.tilt << (swap ? " swapped" : ""));
+      const auto r = swap ? contact(c.b, pb, c.a, pa) : contact(c.a, pa, c.b, pb);
+      ASSERT_EQ(r.status, mink::Status::Intersecting);
+      const Vec3 on_a = swap ? r.point_b : r.point_a, on_b = swap ? r.point_a : r.point_b;
+      EXPECT_LE(outside_solid(c.a, pa, on_a), 1e-11 * size);
+      EXPECT_LE(outside_solid(c.b, pb, on_b), 1e-11 * size);
+      EXPECT_LE((r.point_b - r.point_a + r.depth * r.normal).norm(), 1e-12 * size);
+    }
+  }
+}
+
 TEST(ContactAxial, NearlyParallelCrossingCapsulesAreExact) {
   // Two needles (radius 0.1, half height 10) on nearly the same line, B's centre 3 along A's axis
   // and turned about it by 1e-13 to 1e-1 rad: the segments cross at B's centre, so the depth is
