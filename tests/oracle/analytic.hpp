@@ -184,4 +184,31 @@ inline Answer sphere_box(const V3& center, Real radius, const WorldBox& box) {
   return ans;
 }
 
+/// Capsule (A) against box (B). The squared distance from the point of the core segment at
+/// parameter t to the box is convex in t, and its slope is 2 (x - closest) . (q - p): bisection
+/// on the slope's sign over [0, 1] in long double (200 halvings, to the rounding of t; a search
+/// on the values would stop at the square root of their rounding), then the box's closest point.
+inline Answer capsule_box(const WorldCapsule& c, const WorldBox& box) {
+  auto at = [&](Real t) { return V3(c.p + t * (c.q - c.p)); };
+  auto slope = [&](Real t) {
+    const V3 x = at(t);
+    return (x - point_box(box, x).closest).dot(c.q - c.p);
+  };
+  Real t = 0;
+  if (slope(0) < 0) {
+    t = 1;
+    if (slope(1) > 0) {
+      Real lo = 0, hi = 1;
+      for (int step = 0; step < 200; ++step) {
+        const Real mid = (lo + hi) / 2;
+        (slope(mid) < 0 ? lo : hi) = mid;
+      }
+      t = (lo + hi) / 2;
+    }
+  }
+  const V3 on_segment = at(t);
+  const BoxPoint bp = point_box(box, on_segment);
+  if (bp.signed_distance <= 0) return from_cores(on_segment, on_segment, c.radius, 0);
+  return from_cores(on_segment, bp.closest, c.radius, 0);
+}
 }  // namespace oracle

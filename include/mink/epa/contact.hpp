@@ -17,7 +17,8 @@
 /// (query/box_box.hpp) gives the same depth and normal to rounding, and `iterations` is 0; so
 /// do boxes whose cores are apart with closest points that its best axis gives in closed form
 /// (box_box_closest()). A sphere or point against a box or cylinder (or their rounded versions)
-/// is a closed form throughout, inside the solid or not (query/point_solid.hpp).
+/// is a closed form throughout, inside the solid or not (query/point_solid.hpp); a capsule or
+/// segment against a box while the cores are apart (query/segment_box.hpp).
 ///
 /// Ties: when several normals are equally good the query returns one of them and sets
 /// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric
@@ -45,6 +46,7 @@
 #include "mink/manifold/clip_box_pair.hpp"
 #include "mink/query/axial_pair.hpp"
 #include "mink/query/point_solid.hpp"
+#include "mink/query/segment_box.hpp"
 
 namespace mink {
 
@@ -154,6 +156,17 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       detail::contact_from_cores(cores.on_a, cores.on_b, cores.normal, cores.distance, radius_a,
                                  radius_b, inside, result);
       result.normal_chosen = cores.tie;
+      result.status = result.intersect ? Status::Intersecting : Status::Separated;
+      return result;
+    }
+  }
+  if constexpr (detail::kSegmentBox<A, B>) {
+    // A capsule or segment against a box while the cores are apart: closed form
+    // (query/segment_box.hpp), exact where GJK on two needles stalled. Cores that meet: EPA.
+    if (const auto cores = detail::segment_box_world(a, pose_a, b, pose_b);
+        cores && cores->distance > touch) {
+      detail::contact_from_cores(cores->on_a, cores->on_b, cores->normal, cores->distance, radius_a,
+                                 radius_b, inside, result);
       result.status = result.intersect ? Status::Intersecting : Status::Separated;
       return result;
     }

@@ -25,7 +25,8 @@
 ///
 /// Pairs of spheres, capsules, points and segments (and their Rounded versions) take a closed form
 /// instead of GJK (segment_cores.hpp): exact to rounding, 0 iterations; so do spheres and points
-/// against boxes, cylinders and ellipsoids (query/point_solid.hpp). Pairs of boxes (and
+/// against boxes, cylinders and ellipsoids (query/point_solid.hpp), and capsules and segments
+/// against boxes (query/segment_box.hpp). Pairs of boxes (and
 /// rounded boxes) report 0 iterations too when the separating axis test proves them overlapping,
 /// or when its best axis gives their closest points in closed form (a vertex, edge or face over a
 /// face, or two crossing edges: box_box_closest() in query/box_box.hpp). For other cores with no
@@ -40,6 +41,7 @@
 #include "mink/gjk/separation.hpp"
 #include "mink/query/box_box.hpp"
 #include "mink/query/point_solid.hpp"
+#include "mink/query/segment_box.hpp"
 
 namespace mink {
 
@@ -154,6 +156,21 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       const auto cores = detail::point_solid_world<A, B>(*local, pose_a, pose_b);
       detail::separated_from_cores(cores.on_a, cores.on_b, cores.normal, cores.distance, radius_a,
                                    radius_b, result);
+      return result;
+    }
+  }
+  if constexpr (detail::kSegmentBox<A, B>) {
+    // A capsule or segment against a box: closed form (query/segment_box.hpp).
+    if (const auto cores = detail::segment_box_world(a, pose_a, b, pose_b)) {
+      const S radius_a = a.core_radius(), radius_b = b.core_radius();
+      const S touch = tolerances.relative * (a.bounding_radius() + b.bounding_radius());
+      if (cores->distance <= radius_a + radius_b + touch) {
+        result.status = Status::Intersecting;
+        result.intersect = true;
+        return result;
+      }
+      detail::separated_from_cores(cores->on_a, cores->on_b, cores->normal, cores->distance,
+                                   radius_a, radius_b, result);
       return result;
     }
   }

@@ -12,8 +12,8 @@
 /// pairs of boxes (and rounded boxes) that the separating axis test decides
 /// (query/box_box.hpp: when the cores overlap or are clearly apart, and no two edges are parallel
 /// to within 1e-6 without being exactly parallel; a point of one core within reach of the other
-/// also proves an overlap), and spheres and points against boxes, cylinders and ellipsoids
-/// (query/point_solid.hpp).
+/// also proves an overlap), spheres and points against boxes, cylinders and ellipsoids
+/// (query/point_solid.hpp), and capsules and segments against boxes (query/segment_box.hpp).
 #pragma once
 
 #include "mink/gjk/gjk.hpp"
@@ -21,6 +21,7 @@
 #include "mink/gjk/separation.hpp"
 #include "mink/query/box_box.hpp"
 #include "mink/query/point_solid.hpp"
+#include "mink/query/segment_box.hpp"
 
 namespace mink {
 
@@ -86,6 +87,13 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // iteration.
     if (const auto gap = detail::point_solid_gap(a, pose_a, b, pose_b, reach)) {
       detail::intersect_from_core_gap(*gap, reach, result);
+      return result;
+    }
+  }
+  if constexpr (detail::kSegmentBox<A, B>) {
+    // A capsule or segment against a box: closed form (query/segment_box.hpp).
+    if (const auto local = detail::segment_box_pair_local(a, pose_a, b, pose_b)) {
+      detail::intersect_from_core_gap(local->gap, reach, result);
       return result;
     }
   }

@@ -157,52 +157,47 @@ inline constexpr double kAxialFallbackTilt = 1.0;
 inline constexpr int kAxialScanPlanes = 12;
 inline constexpr int kAxialMaxPlanes = 64;
 
-/// Moves a (a point of A's support feature along the unit n) and b (of B's, along -n) so that
-/// b = a - depth n. Their difference across n, r, comes from a plane's projection, which drops
-/// what lies off the plane: a cone's apex against a cylinder's cap off the plane, r is the
-/// apex's offset, and shared evenly it put both points off their shapes (0.09 off a cone of
-/// 0.5). Each point moves along r only as far as its support feature reaches that way: the
-/// support along n tilted by 1e-6 rad away from r gives the farthest point of A's feature
-/// against r and of B's with it (a vertex does not move; a cap or a side moves up to its rim or
-/// end), and not farther than keeps it within `slack` (unit: length) of its support plane. On a
-/// curved surface the tilt lets a point move by 1e-6 of its radius of curvature, which leaves it
-/// off the surface by 5e-13 of that radius.
+/// Witness points for an answer of the cores, the unit normal n and the depth (B moves by depth
+/// along n to separate): points of A and B that touch once B has moved that far. a and b come in
+/// as the answer's own points and are replaced when the touching points are closer to
+/// b = a - depth n (true when `false` is not returned); either way the rest of a - b - depth n is
+/// then shared evenly between them.
+///
+/// Why: a plane's answer (tilted_axial_depth()) has points of the projection's polygon, which
+/// drops what lies off the plane, and a normal known to about 1e-9 rad. Where it lands on a kink
+/// of the depth over the normals (two caps whose rims nearly meet, a cone's apex in a cap), the
+/// support points along it are rim points of both caps; their offset across n was shared evenly
+/// and moved both off their shapes (by up to 3e-5 of the size). Moved apart by depth plus a few
+/// touching tolerances, the shapes are separated by about that, and GJK's closest points are
+/// points of the shapes (a combination of support points) whose offset is that gap.
 template <class A, class B>
-void place_on_features(const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& n,
-                       typename A::Scalar depth, typename A::Scalar slack,
-                       Vec3T<typename A::Scalar>& a, Vec3T<typename A::Scalar>& b) {
+bool touching_points(const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& n,
+                     typename A::Scalar depth, typename A::Scalar size,
+                     const TolerancesT<typename A::Scalar>& tol, int& iterations,
+                     Vec3T<typename A::Scalar>& a, Vec3T<typename A::Scalar>& b) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  V r = a - b - depth * n;
-  r -= r.dot(n) * n;
-  const S length = r.norm();
-  if (!(length > S(0)) || !std::isfinite(length)) return;
-  const V u = r / length;
-  SimplexVertexT<S> reach;
-  diff.support(unit_of(V(n - S(1e-6) * u)), reach);
-  // How far each feature reaches across n; a feature that also falls away along n (a cap tilted
-  // from n, whose support point is one rim point) only as far as that keeps the fall within
-  // `slack`.
-  auto usable = [slack](S across, S fall) {
-    across = std::max(S(0), across);
-    fall = std::abs(fall);
-    return fall <= slack ? across : across * (slack / fall);
+  auto share = [&n, depth](V& p, V& q) {
+    const V residual = S(0.5) * (p - q - depth * n);
+    p -= residual;
+    q += residual;
+    return S(2) * residual.norm();
   };
-  const S reach_a = usable((a - reach.a).dot(u), (a - reach.a).dot(n));  // against u
-  const S reach_b = usable((reach.b - b).dot(u), (reach.b - b).dot(n));  // along u
-  S move_a = S(0.5) * length, move_b = S(0.5) * length;
-  if (reach_a + reach_b >= length) {
-    // In proportion to the reaches: the same split with A and B swapped.
-    move_a = length * (reach_a / (reach_a + reach_b));
-    move_b = length - move_a;
-  } else {
-    // Short of the tolerance: each to its reach, the rest shared.
-    const S rest = S(0.5) * (length - reach_a - reach_b);
-    move_a = reach_a + rest;
-    move_b = reach_b + rest;
+  const S shift = depth + S(4) * tol.relative * size;
+  const CoreDifference<A, B> moved{diff.a, diff.b, diff.rotation, V(diff.translation + shift * n)};
+  const auto gjk = run_gjk_distance(moved, S(0), size, tol, nullptr);
+  iterations += gjk.iterations;
+  V on_a, on_b;
+  if (gjk.status == Status::Separated) {
+    gjk.simplex.witness_points(on_a, on_b);
+    on_b -= shift * n;
   }
-  a -= move_a * u;
-  b += move_b * u;
+  const S given = share(a, b);
+  if (gjk.status != Status::Separated || !is_finite(on_a) || !is_finite(on_b)) return false;
+  if (!(share(on_a, on_b) < given)) return false;
+  a = on_a;
+  b = on_b;
+  return true;
 }
 
 /// The depth of the origin in A - B seen in the plane span(e, w) (e, w orthonormal, in A's frame):
@@ -362,20 +357,17 @@ std::optional<AxialDepth<typename A::Scalar>> planar_depth(
     a = best.a;
     b = best.b;
   }
-  // What is left of a - b - depth n (the offset of the support point along the section at the
-  // cap; off the plane, on a projection) is shared between the points so that
-  // on_b - on_a = -depth n holds. On a section the projected points are the cores' own (each is
-  // symmetric about the plane); off it, each point moves only as far as its support feature
-  // reaches (place_on_features()).
+  // On a section the projected points are the cores' own (each is symmetric about the plane),
+  // and what is left of a - b - depth n (the offset of the support point along the section at the
+  // cap) is shared between them so that on_b - on_a = -depth n holds. Off it, the points are the
+  // projection's, and tilted_axial_depth() places its best plane's (touching_points()).
   if (section) {
     const V residual = S(0.5) * (a - b - out.depth * out.normal);
-    out.on_a = a - residual;
-    out.on_b = b + residual;
-  } else {
-    place_on_features(diff, out.normal, out.depth, tol.relative * size, a, b);
-    out.on_a = a;
-    out.on_b = b;
+    a -= residual;
+    b += residual;
   }
+  out.on_a = a;
+  out.on_b = b;
   out.status = converged || upper - lower <= tol.relative_depth * size ? Status::Intersecting
                                                                        : Status::IterationLimit;
   return out;
@@ -554,6 +546,7 @@ std::optional<AxialDepth<typename A::Scalar>> tilted_axial_depth(
   out.error_bound += std::max(fw, fv) - fx;
   out.normal_chosen = false;
   out.status = converged ? best->status : Status::IterationLimit;
+  touching_points(diff, out.normal, out.depth, size, tol, out.iterations, out.on_a, out.on_b);
   return out;
 }
 
@@ -578,11 +571,11 @@ void polish_capped_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
                                       tol.max_iterations, iterations, least);
   out.iterations += iterations;
   if (!finite || !(least.value < out.depth)) return;
-  const Vec3T<S> residual = S(0.5) * (least.vertex.a - least.vertex.b - least.value * least.normal);
   out.depth = least.value;
   out.normal = least.normal;
-  out.on_a = least.vertex.a - residual;
-  out.on_b = least.vertex.b + residual;
+  out.on_a = least.vertex.a;
+  out.on_b = least.vertex.b;
+  touching_points(diff, out.normal, out.depth, size, tol, out.iterations, out.on_a, out.on_b);
 }
 
 /// The depth of the cores of diff.a and diff.b (B posed by diff.rotation, diff.translation in A's

@@ -737,6 +737,28 @@ std::optional<PointSolidLocal<typename A::Scalar>> point_solid_local(
   return SolidOf<A, B>::local(*solid, point_in_solid_frame(a, pose_a, b, pose_b));
 }
 
+/// A CorePair from a point of the solid core, the other core's point and the solid's outward
+/// normal there (world frame), with A's first whether the solid is A (kSolidIsA) or B.
+template <bool kSolidIsA, class S>
+[[gnu::always_inline]] inline CorePair<S> ordered_core_pair(const Vec3T<S>& on_solid,
+                                                            const Vec3T<S>& on_other,
+                                                            const Vec3T<S>& out_of_solid,
+                                                            S distance, bool tie) {
+  CorePair<S> out;
+  out.distance = distance;
+  out.tie = tie;
+  if constexpr (kSolidIsA) {
+    out.on_a = on_solid;
+    out.on_b = on_other;
+    out.normal = out_of_solid;
+  } else {
+    out.on_a = on_other;
+    out.on_b = on_solid;
+    out.normal = -out_of_solid;
+  }
+  return out;
+}
+
 /// point_solid_local()'s answer as the cores' points and normal in the world frame, A's and B's.
 /// Always inlined: with the pose's transforms written out, GCC returned the points through memory
 /// a coordinate at a time, and the caller's packed reads stalled on store forwarding (sphere-box
@@ -748,22 +770,9 @@ template <class A, class B>
   using S = typename A::Scalar;
   constexpr bool kSolidIsA = SolidCore<A>::value;
   const PoseT<S>& solid_pose = kSolidIsA ? pose_a : pose_b;
-  const Vec3T<S> point_world = solid_pose.apply(local.p);
-  const Vec3T<S> solid_world = solid_pose.apply(local.on_solid);
-  const Vec3T<S> normal = solid_pose.rotate(local.out_of_solid);
-  CorePair<S> out;
-  out.distance = local.signed_distance;
-  out.tie = local.tie;
-  if constexpr (kSolidIsA) {
-    out.on_a = solid_world;
-    out.on_b = point_world;
-    out.normal = normal;
-  } else {
-    out.on_a = point_world;
-    out.on_b = solid_world;
-    out.normal = -normal;
-  }
-  return out;
+  return ordered_core_pair<kSolidIsA>(solid_pose.apply(local.on_solid), solid_pose.apply(local.p),
+                                      solid_pose.rotate(local.out_of_solid), local.signed_distance,
+                                      local.tie);
 }
 
 }  // namespace mink::detail

@@ -376,30 +376,102 @@ TEST(ContactAxial, TiltedPairsKeepTheirPointsOnTheShapes) {
   // A cone's apex pressed into another's base, and a cylinder's tilted cap on a cap (found by an
   // adversarial sweep): depth and normal were exact, but the plane's projection dropped the
   // apex's offset from the plane, and sharing it between the points put B's 0.09 off B (and
-  // the rim point 3e-8 below the tilted cap). Each point now moves only within its feature.
+  // the rim point 3e-8 below the tilted cap). Then caps whose rims nearly meet across (the
+  // lateral gap 1e-5, 1e-6 deep along the axes), where the plane's normal lands on a kink and
+  // the support points along it were one rim point of each cap, 1e-5 apart across the normal:
+  // shared evenly, both points were 5e-6 off their shapes. The points are now where the shapes
+  // touch once B has moved out by the depth (touching_points()).
   const Solid big_cone{Kind::Cone, 1, 1}, cone{Kind::Cone, 0.5, 0.5};
   const Solid tall{Kind::Cylinder, 1, 2}, cylinder{Kind::Cylinder, 0.5, 1};
+  const Solid disc{Kind::Cylinder, 0.9, 1}, plate{Kind::Cylinder, 1.4, 0.3};
+  const Solid base{Kind::Cone, 1, 1.5};
   struct Case {
     Solid a, b;
     Vec3 t;
     double tilt;
   };
-  // Not yet: the same cylinders 0.2 deep, tilted 1e-2 rad, whose rim point comes from a chord of
-  // the plane's polygon, 1.2e-6 inside the rim and so 1.2e-8 outside the tilted cap.
+  const double across = 0.9 + 1.4 - 1e-5, wider = 0.9 + 1.4 - 1e-4;
   for (const Case& c : {Case{big_cone, cone, Vec3(0.2, 0.1, -1.45), 2e-6},
-                        Case{tall, cylinder, Vec3(0.2, 0.1, 3.0000001), 1e-5}}) {
+                        Case{tall, cylinder, Vec3(0.2, 0.1, 3.0000001), 1e-5},
+                        Case{tall, cylinder, Vec3(0.2, 0.1, 2.8), 1e-2},
+                        Case{disc, plate, Vec3(across * 0.6, across * 0.8, 1.3 - 1e-6), 4e-9},
+                        Case{disc, plate, Vec3(wider * 0.6, wider * 0.8, 1.3 - 1e-4), 5e-5},
+                        Case{disc, base, Vec3(0.9 * 0.6, 0.9 * 0.8, 2.5 - 0.8), 5e-5}}) {
     const Pose pa{};
     Pose pb = Pose::from(c.t, Quat(Eigen::AngleAxisd(c.tilt, Vec3::UnitX())));
     if (c.a.kind == Kind::Cone) pb.rotation = pb.rotation * Eigen::AngleAxisd(M_PI, Vec3::UnitX());
     const double size = c.a.size() + c.b.size();
     for (const bool swap : {false, true}) {
-      SCOPED_TRACE(testing::Message() << "tilt " << c.tilt << (swap ? " swapped" : ""));
+      SCOPED_TRACE(testing::Message() << "B at " << c.t.transpose() << ", tilt " << c.tilt
+                                      << (swap ? " swapped" : ""));
       const auto r = swap ? contact(c.b, pb, c.a, pa) : contact(c.a, pa, c.b, pb);
       ASSERT_EQ(r.status, mink::Status::Intersecting);
       const Vec3 on_a = swap ? r.point_b : r.point_a, on_b = swap ? r.point_a : r.point_b;
       EXPECT_LE(outside_solid(c.a, pa, on_a), 1e-11 * size);
       EXPECT_LE(outside_solid(c.b, pb, on_b), 1e-11 * size);
       EXPECT_LE((r.point_b - r.point_a + r.depth * r.normal).norm(), 1e-12 * size);
+    }
+  }
+
+  // Lines of tests/slow/probe_stop48/witness_off_shape.jsonl: caps whose rims nearly meet, one 1e4
+  // from the origin, and a needle; before touching_points() their points were off by up to 3e-5
+  // of the size.
+  struct Probed {
+    Solid a, b;
+    Pose pa, pb;
+  };
+  for (const Probed& c :
+       {Probed{Solid{Kind::Cylinder, 0.924738036892016, 1.0233312357747673},
+               Solid{Kind::Cylinder, 1.4052257324934083, 0.29997359917213484},
+               Pose::from(Vec3(0.9389251974507982, -0.4467057166084971, -1.1227540612514506),
+                          Quat(0.5814736183908167, -0.643732494236709, -0.4737129637955527,
+                               0.1519635973228778)
+                              .normalized()),
+               Pose::from(Vec3(0.01025223164212452, 1.3852498506716862, 0.5981037910533789),
+                          Quat(0.5814736187254059, -0.643732496140363, -0.47371296075604546,
+                               0.1519635974535356)
+                              .normalized())},
+        Probed{Solid{Kind::Cylinder, 0.8801454851341941, 1.0625666251480588},
+               Solid{Kind::Cone, 0.9872869364338956, 1.44147963529843},
+               Pose::from(Vec3(1107.3430287871402, 33021.82300616972, 28739.412451447948),
+                          Quat(0.15297012645542998, 0.25201133711118945, -0.8170612445595327,
+                               -0.49548092699766727)
+                              .normalized()),
+               Pose::from(Vec3(1107.435946331027, 33020.0410612915, 28740.157974022302),
+                          Quat(0.8170806595843089, 0.4954574795594264, 0.1529674015050688,
+                               0.2519961423488036)
+                              .normalized())},
+        Probed{Solid{Kind::Cylinder, 0.005663803341782002, 0.13853820749385162},
+               Solid{Kind::Cone, 0.0016482598094343277, 0.007500408182221634},
+               Pose::from(Vec3(0.0, 0.0, 0.0), Quat(0.1554528469315677, 0.3489037653893219,
+                                                    -0.8029905315553153, -0.4575005804483048)
+                                                   .normalized()),
+               Pose::from(Vec3(-0.08793049536173497, 0.08610092165464009, -0.07896579440045563),
+                          Quat(0.15545295062994657, 0.34890343649832445, -0.8029906875982467,
+                               -0.4575005221533611)
+                              .normalized())},
+        Probed{Solid{Kind::Cylinder, 0.8715339467958396, 0.8820053936358547},
+               Solid{Kind::Cylinder, 0.8715339467958396, 0.8820053936358547},
+               Pose::from(Vec3(0, 0, 0), Quat(-0.38389033306595716, -0.38344275958220375,
+                                              -0.4124904252907009, -0.7317455236255221)
+                                             .normalized()),
+               Pose::from(Vec3(4.670052298180034e-07, 0.0006382853227795769, -0.0),
+                          Quat(-0.3836949459314687, -0.3834026670702836, -0.41215490486926554,
+                               -0.7320580016243571)
+                              .normalized())}}) {
+    const double size = c.a.size() + c.b.size();
+    const double far = std::max(c.pa.translation.cwiseAbs().maxCoeff(), 1.0);
+    for (const bool swap : {false, true}) {
+      SCOPED_TRACE(testing::Message()
+                   << "probe line at " << c.pa.translation.transpose() << (swap ? " swapped" : ""));
+      const auto r = swap ? contact(c.b, c.pb, c.a, c.pa) : contact(c.a, c.pa, c.b, c.pb);
+      ASSERT_EQ(r.status, mink::Status::Intersecting);
+      const Vec3 on_a = swap ? r.point_b : r.point_a, on_b = swap ? r.point_a : r.point_b;
+      // The coordinates' own rounding, 1e4 out, is 2e-12.
+      const double allowed = 1e-11 * size + 1e-15 * far;
+      EXPECT_LE(outside_solid(c.a, c.pa, on_a), allowed);
+      EXPECT_LE(outside_solid(c.b, c.pb, on_b), allowed);
+      EXPECT_LE((r.point_b - r.point_a + r.depth * r.normal).norm(), 1e-12 * size + 1e-15 * far);
     }
   }
 }
