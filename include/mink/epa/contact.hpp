@@ -321,18 +321,42 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     cores_apart();
     return result;
   }
-  const Vec3T<S>& n = epa.normal;
+  Vec3T<S> n = epa.normal;
   if (!(std::abs(n.squaredNorm() - S(1)) <= S(1e-6))) {
     // EPA's face normals are products of four coordinates: beyond about 1e77 they overflow, and
     // the normal comes out zero. Say so rather than answer with it.
     result.error = detail::kOverflowError;
     return result;
   }
+  S core_depth = std::max(S(0), epa.depth);
+  Vec3T<S> on_a = epa.a, on_b = epa.b;
+  if constexpr (detail::kCurvedPair<A, B>) {
+    // Curved cores: EPA's normal of a smooth minimum is good to the square root of its tolerance
+    // (1e-5 rad); Newton's steps (gjk/support_newton.hpp) take it, and the points (the support
+    // points along it), to the rounding. Kept only as deep as EPA's upper end, to rounding.
+    if (!epa.degenerate && epa.depth > touch) {
+      detail::SupportMinimum<S> least;
+      SimplexVertexT<S> start;
+      diff.support(n, start);
+      ++result.iterations;
+      least.offer(n.dot(start.w), n, start);
+      const S rounding = S(16) * std::numeric_limits<S>::epsilon() * start.w.cwiseAbs().maxCoeff();
+      if (detail::newton_on_support(diff, size, tolerances.relative_depth * size, 3,
+                                    result.iterations, least) > 0 &&
+          least.value <= epa.upper + rounding) {
+        n = least.normal;
+        core_depth = std::max(S(0), least.value);
+        const Vec3T<S> residual =
+            S(0.5) * (least.vertex.a - least.vertex.b - core_depth * least.normal);
+        on_a = least.vertex.a - residual;
+        on_b = least.vertex.b + residual;
+      }
+    }
+  }
   result.intersect = true;
-  result.depth = std::max(S(0), epa.depth) + radius_a + radius_b;
+  result.depth = core_depth + radius_a + radius_b;
   result.error_bound = std::max(S(0), epa.upper - epa.lower);
   result.normal = pose_a.rotate(n);
-  Vec3T<S> on_a = epa.a, on_b = epa.b;
   if (gjk.upper <= touch && !(epa.depth > touch)) {
     // Cores that touch: both points at the midpoint of GJK's closest points, which are points of
     // the two cores within `touch` of each other up to the rounding of the simplex's weights

@@ -9,6 +9,7 @@
 
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/support_descent.hpp"
+#include "mink/gjk/support_newton.hpp"
 
 namespace mink::detail {
 
@@ -154,6 +155,27 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
   const S touch = tolerances.relative * size;
   CoreSeparation<S> out;
   find_separation(diff, gjk, touch, tolerances.max_iterations, iterations, out);
+  if constexpr (kCurvedPair<A, B>) {
+    // Curved cores apart: the normal of a smooth minimum is good to the square root of GJK's
+    // tolerance; Newton's steps (gjk/support_newton.hpp) take it to the rounding, and the points
+    // become the support points along it, lined up at GJK's distance.
+    if (gjk.upper > touch && std::isfinite(gjk.upper)) {
+      SupportMinimum<S> least;
+      SimplexVertexT<S> start;
+      diff.support(out.normal, start);
+      ++iterations;
+      least.offer(out.normal.dot(start.w), out.normal, start);
+      if (newton_on_support(diff, size, tolerances.relative_depth * size, 3, iterations, least) >
+          0) {
+        out.normal = least.normal;
+        out.lower = std::max(out.lower, -least.value);
+        const Vec3T<S> residual =
+            S(0.5) * (least.vertex.b - least.vertex.a - gjk.upper * least.normal);
+        out.on_a = least.vertex.a + residual;
+        out.on_b = least.vertex.b - residual;
+      }
+    }
+  }
   const bool capped = gjk.status == Status::IterationLimit;
   const bool open = gjk.upper - out.lower > tolerances.relative_depth * size;
   if (gjk.upper <= radii + touch)
