@@ -334,7 +334,7 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // Curved cores: EPA's normal of a smooth minimum is good to the square root of its tolerance
     // (1e-5 rad); Newton's steps (gjk/support_newton.hpp) take it, and the points (the support
     // points along it), to the rounding. Kept only as deep as EPA's upper end, to rounding.
-    if (!epa.degenerate && epa.depth > touch) {
+    if (tolerances.refine_curved_normals && !epa.degenerate && epa.depth > touch) {
       detail::SupportMinimum<S> least;
       SimplexVertexT<S> start;
       diff.support(n, start);

@@ -159,7 +159,7 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
     // Curved cores apart: the normal of a smooth minimum is good to the square root of GJK's
     // tolerance; Newton's steps (gjk/support_newton.hpp) take it to the rounding, and the points
     // become the support points along it, lined up at GJK's distance.
-    if (gjk.upper > touch && std::isfinite(gjk.upper)) {
+    if (tolerances.refine_curved_normals && gjk.upper > touch && std::isfinite(gjk.upper)) {
       SupportMinimum<S> least;
       SimplexVertexT<S> start;
       diff.support(out.normal, start);

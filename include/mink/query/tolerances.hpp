@@ -28,6 +28,13 @@ struct TolerancesT {
   /// with parallel or nearly parallel axes take the planar path of query/axial_pair.hpp instead,
   /// which this caps per plane.
   int max_iterations = 512;
+  /// Curved pairs (a cylinder, cone or ellipsoid on either side): refine the normal, and the
+  /// points with it, by Newton's method on the support function after GJK and EPA
+  /// (gjk/support_newton.hpp). Their value tolerances leave a smooth minimum's normal off by
+  /// their square root (up to 2e-5 rad); refined, it is good to about 1e-9 (a cone's kink, 1e-6),
+  /// for 10-90 % more time on those pairs (docs/benchmarks.md, "Stop 49"). Off: GJK's and EPA's
+  /// own normal.
+  bool refine_curved_normals = true;
 };
 
 using Tolerances = TolerancesT<double>;

@@ -77,4 +77,26 @@ TEST(ContactCurvedNormal, NormalsMatchTheLeastSupportValue) {
   std::printf("[  worst   ] normal %.3g rad, with a cone %.3g rad\n", worst, worst_cone);
 }
 
+TEST(ContactCurvedNormal, RefinementCanBeTurnedOff) {
+  // Tolerances::refine_curved_normals = false: GJK's and EPA's own normal, fewer support calls,
+  // the same depth and distance to EPA's tolerance.
+  const mink::Ellipsoid a{mink::Vec3(1.0, 0.7, 0.5)};
+  const mink::Cylinder b{0.6, 0.9};
+  mink::Tolerances plain;
+  plain.refine_curved_normals = false;
+  const mink::Pose pa =
+      mink::Pose::from(mink::Vec3::Zero(), mink::Quat(0.9, 0.1, -0.3, 0.2).normalized());
+  for (const double offset : {0.8, 2.5}) {
+    const mink::Pose pb = mink::Pose::from(mink::Vec3(offset, 0.4, 0.3),
+                                           mink::Quat(0.3, 0.8, 0.1, -0.5).normalized());
+    const auto refined = mink::contact(a, pa, b, pb);
+    const auto unrefined = mink::contact(a, pa, b, pb, plain);
+    ASSERT_EQ(refined.intersect, unrefined.intersect);
+    EXPECT_LT(unrefined.iterations, refined.iterations);
+    EXPECT_NEAR(refined.depth, unrefined.depth, 1e-9);
+    EXPECT_NEAR(refined.distance, unrefined.distance, 1e-9);
+    EXPECT_LT((refined.normal - unrefined.normal).norm(), 1e-4);
+  }
+}
+
 }  // namespace
