@@ -159,9 +159,9 @@ inline constexpr int kAxialMaxPlanes = 64;
 
 /// Witness points for an answer of the cores, the unit normal n and the depth (B moves by depth
 /// along n to separate): points of A and B that touch once B has moved that far. a and b come in
-/// as the answer's own points and are replaced when the touching points are closer to
-/// b = a - depth n (true when `false` is not returned); either way the rest of a - b - depth n is
-/// then shared evenly between them.
+/// as the answer's own points and are replaced by the touching points (returning true) when
+/// those are closer to b = a - depth n; either way what is left of a - b - depth n is then shared
+/// evenly between them.
 ///
 /// Why: a plane's answer (tilted_axial_depth()) has points of the projection's polygon, which
 /// drops what lies off the plane, and a normal known to about 1e-9 rad. Where it lands on a kink
@@ -205,8 +205,10 @@ bool touching_points(const CoreDifference<A, B>& diff, const Vec3T<typename A::S
 /// support value along a direction of the plane is A - B's. With `section` (parallel solids of
 /// revolution, the plane through their axes), each core's support point is first projected onto
 /// the plane through its own axis point (centre_a, centre_b), which keeps it in the core with the
-/// same support value: a tie (a cylinder's cap) may leave the plane. Nothing when the projection
-/// has no area, shows the cores apart, or overflows.
+/// same support value: a tie (a cylinder's cap) may leave the plane. Without it, the answer's
+/// points are the projection's polygon's, not yet with on_b - on_a = -depth n (the caller places
+/// its best plane's: touching_points()). Nothing when the projection has no area, shows the
+/// cores apart, or overflows.
 template <class A, class B>
 std::optional<AxialDepth<typename A::Scalar>> planar_depth(
     const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& e,

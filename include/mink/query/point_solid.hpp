@@ -559,11 +559,15 @@ struct SolidCore<EllipsoidT<S>> : std::true_type {
   }
   static std::optional<Vec3T<S>> gap(const Core& e, const Vec3T<S>& p, S) {
     if (inside(e, p)) return Vec3T<S>::Zero();
-    const auto l = local(e, p);
+    const auto l = local(e, p, false);
     if (!l) return std::nullopt;
     return Vec3T<S>(p - l->on_solid);
   }
   static std::optional<PointSolidLocal<S>> local(const Core& e, const Vec3T<S>& p) {
+    return local(e, p, inside(e, p));
+  }
+  /// local() for a p already known to be inside (`in`) or not.
+  static std::optional<PointSolidLocal<S>> local(const Core& e, const Vec3T<S>& p, bool in) {
     // In units of the largest radius, so that the squares below neither overflow nor underflow.
     const S scale = e.radii.maxCoeff();
     const Vec3T<S> r = e.radii / scale, y = p.cwiseAbs() / scale;
@@ -644,7 +648,6 @@ struct SolidCore<EllipsoidT<S>> : std::true_type {
       normal[i] = sign * g[i];
     }
     out.out_of_solid = unit_of(normal);
-    const bool in = inside(e, p);
     const Vec3T<S> gap = p - out.on_solid;
     out.signed_distance = in ? -gap.norm() : gap.norm();
     out.tie = in && off_plane;
