@@ -13,9 +13,11 @@
 /// H_ij = t_i . ds/dx_j - h(u) delta_ij, where ds/dx_j is taken by a forward difference of the
 /// support point along t_j. The step -H^{-1} g lands within the Hessian's relative error of the
 /// minimiser (a forward difference of 1e-7 rad: about 1e-7), so one or two steps bring the normal
-/// from 1e-5 rad to the rounding. Where h is not smooth (a kink: a cylinder's rim, a box's edge)
-/// the difference is no Hessian; a step is kept only when it lowers h or leaves it within its
-/// rounding while the gradient falls, so it never makes the answer worse.
+/// from 1e-5 rad to the rounding. Where the minimum lies on a kink of h (a capsule or cylinder on
+/// its side, where its support point jumps from one end of its axis to the other) the difference
+/// is no Hessian; secant steps along the kink take over (secant_on_kink()). A step is kept only
+/// when it leaves h within its rounding or lowers it, and the answer only when its points are a
+/// witness pair (newton_on_support()), so it never makes the answer worse.
 #pragma once
 
 #include <algorithm>
