@@ -38,6 +38,7 @@
 
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
+#include "mink/gjk/separation.hpp"
 #include "mink/gjk/support_descent.hpp"
 #include "mink/math/orthogonal.hpp"
 
@@ -786,6 +787,30 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     out.depth = least.value;
   }
   return out;
+}
+
+/// separate_cores() for distance() and intersect(), with contact()'s word on cores that GJK
+/// neither proved apart nor found meeting: its bracket on their distance straddles the touching
+/// tolerance (curved cores grazing a thin plate, whose GJK crawls to its cap). contact() runs EPA
+/// on them there; where EPA converges on cores that enclose the origin (not flat, and no
+/// direction proving them apart), they meet, and so the three queries give one verdict.
+template <ConvexShape A, ConvexShape B>
+CoreSeparation<typename A::Scalar> settle_cores(const CoreDifference<A, B>& diff,
+                                                const GjkOutcome<typename A::Scalar>& gjk,
+                                                typename A::Scalar radii, typename A::Scalar size,
+                                                const TolerancesT<typename A::Scalar>& tolerances,
+                                                int& iterations) {
+  using S = typename A::Scalar;
+  auto cores = separate_cores(diff, gjk, radii, size, tolerances, iterations);
+  const S touch = tolerances.relative * size;
+  if (cores.status != Status::IterationLimit || !(cores.lower <= touch)) return cores;
+  const Vec3T<S> fallback =
+      diff.translation != Vec3T<S>::Zero() ? unit_of(diff.translation) : Vec3T<S>::UnitZ();
+  const auto epa = run_epa(diff, gjk.simplex, size, tolerances, fallback);
+  iterations += epa.iterations;
+  if (epa.status == Status::Intersecting && !epa.degenerate && !(epa.upper < -touch))
+    cores.status = Status::Intersecting;
+  return cores;
 }
 
 }  // namespace mink::detail

@@ -36,6 +36,7 @@
 /// Cost: no allocation, no global state, reentrant.
 #pragma once
 
+#include "mink/epa/epa.hpp"
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/separation.hpp"
@@ -227,8 +228,9 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     return result;
   }
   // Cores apart, or touching within tolerance (curved cores that touch, whose GJK crawls), or
-  // GJK stalled: separate_cores() tells, by the rule contact() shares.
-  const auto cores = detail::separate_cores(diff, gjk, radii, size, tolerances, result.iterations);
+  // GJK stalled: settle_cores() tells, by the rule contact() shares (and where GJK's bracket
+  // straddles touching, by contact()'s EPA).
+  const auto cores = detail::settle_cores(diff, gjk, radii, size, tolerances, result.iterations);
   result.status = cores.status;
   if (cores.status == Status::Intersecting) {
     result.intersect = true;

@@ -16,6 +16,7 @@
 /// (query/point_solid.hpp), and capsules and segments against boxes (query/segment_box.hpp).
 #pragma once
 
+#include "mink/epa/epa.hpp"
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/separation.hpp"
@@ -128,7 +129,7 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       result.status = Status::Intersecting;
     } else {
       result.status =
-          detail::separate_cores(diff, full, radius, size, tolerances, result.iterations).status;
+          detail::settle_cores(diff, full, radius, size, tolerances, result.iterations).status;
     }
     result.intersect = result.status == Status::Intersecting;
     return result;

@@ -4,7 +4,10 @@
 // simplex that is a chord of the surface, and the direction of its v was up to 3e-9 of the size
 // off optimal in the normal's support value while the distance was exact; touching cores crawled
 // to a distance of 8e-12 of the size and answered separated with a normal 1e-6 off; and a GJK
-// that stalled 5e-9 short answered separated. Each fails on the code before separation.hpp.
+// that stalled 5e-9 short answered separated. Each fails on the code before separation.hpp. A
+// cylinder grazing a thin box's edge (stop 48's probe) ended distance() and intersect() at their
+// cap, apart by 8e-11, where contact()'s EPA finds them meeting (the oracle: 3e-12 deep); EPA
+// settles such brackets for all three now (settle_cores(), epa/epa.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -87,6 +90,18 @@ const Case kCases[] = {
      rows(0.92872176592731959, 0.37077740154011696, 0, -0.34580534755265802, 0.86617186406779134,
           0.36078381823650746, 0.13377048664345409, -0.33506778479061028, 0.93264947139784882),
      Vec3(1.8508389980711675, -1.6324463806304821, -0.96068435110703942)},
+    {"cylinder grazing a thin box's edge, 3e-12 deep (GJK crawls to its cap; EPA settles it)",
+     shape(CurvedKind::Cylinder, 0.42312386607024643, 1.0982411425812806, Vec3::Zero()),
+     rows(0.16117119380947675, -0.9341458294298336, 0.31842646819144355, 0.96305029247590757,
+          0.21940137974189045, 0.15619593057894848, -0.21577298359177649, 0.28148641872424868,
+          0.9349905965439973),
+     Vec3(-0.5427076472855874, 0.47760544612018974, 0.3129346094973653),
+     shape(CurvedKind::Box, 0, 0,
+           Vec3(0.01837052670750065, 1.4701306007158683, 0.8930135854951435)),
+     rows(0.44666761940654787, -0.83670279593078944, -0.31688557722825944, -0.89404676244853765,
+          -0.40387673648460409, -0.19381426232822602, 0.034182222411300867, 0.36988107954874622,
+          -0.92845008625282555),
+     Vec3(1.157545573709903, 0.960560953342996, -0.15158795990607338)},
 };
 
 /// The answer must be right to 1e-9 of the size (distance, the normal's support value, the
@@ -133,9 +148,13 @@ TEST(CurvedSeparation, MatchesOracle) {
     expect_against_oracle(c, d, d.distance, expected);
     const auto k = mink::contact(a, pose_a, b, pose_b);
     expect_against_oracle(c, k, k.distance - k.depth, expected);
-    // One rule for both queries (separate_cores()): the same verdict and status.
+    // One rule for the three queries (separate_cores(), settle_cores()): the same verdict and
+    // status.
     EXPECT_EQ(d.intersect, k.intersect) << c.name;
     EXPECT_EQ(d.status, k.status) << c.name;
+    const auto i = mink::intersect(a, pose_a, b, pose_b);
+    EXPECT_EQ(i.intersect, k.intersect) << c.name;
+    EXPECT_EQ(i.status, k.status) << c.name;
   }
 }
 
