@@ -1,6 +1,8 @@
 #include "mink/support/shape.hpp"
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace mink {
 
@@ -19,6 +21,51 @@ const char* core_error(const Core& core) {
           return c.error();
       },
       core);
+}
+
+/// Half of a segment symmetric about the origin (its end points b and -b): b, else nothing.
+std::optional<Vec3> symmetric_half(const Core& core) {
+  const auto* segment = std::get_if<Segment>(&core);
+  if (!segment || segment->a != -segment->b) return std::nullopt;
+  return segment->b;
+}
+
+bool is_origin_point(const Core& core) {
+  const auto* point = std::get_if<Point>(&core);
+  return point && point->position == Vec3::Zero();
+}
+
+/// Folds `part` into `into` when their sum is again one core of a kind Core holds, exactly (to
+/// the rounding of one addition): a point at the origin adds nothing, and a segment symmetric
+/// about the origin lengthens a cylinder or a segment along it, or a box along one of its axes.
+/// Returns false, `into` untouched, otherwise.
+bool fold_core(Core& into, const Core& part) {
+  if (is_origin_point(part)) return true;
+  if (is_origin_point(into)) {
+    into = part;
+    return true;
+  }
+  const std::optional<Vec3> half = symmetric_half(part);
+  if (!half) return false;
+  const Vec3 reach = half->cwiseAbs();
+  if (auto* cylinder = std::get_if<Cylinder>(&into)) {
+    if (reach.x() != 0 || reach.y() != 0) return false;
+    cylinder->half_height += reach.z();
+    return true;
+  }
+  if (auto* box = std::get_if<Box>(&into)) {
+    int axis;
+    if (reach.maxCoeff(&axis) != reach.sum()) return false;  // not along one axis
+    box->half_extents[axis] += reach[axis];
+    return true;
+  }
+  if (const std::optional<Vec3> own = symmetric_half(into)) {
+    if (own->cross(*half) != Vec3::Zero()) return false;
+    const Vec3 b = *own + (own->dot(*half) >= 0 ? *half : Vec3(-*half));
+    into = Segment{-b, b};
+    return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -100,10 +147,31 @@ Expected<Shape> Shape::convex_hull(std::span<const Vec3> points) {
 Expected<Shape> Shape::sum(const Shape& a, const Shape& b) {
   if (a.cores_.empty() || b.cores_.empty())
     return Expected<Shape>::failure("sum of an empty shape");
+  // A part that folds into a core already there (a sphere's centre, a capsule's segment along a
+  // cylinder's axis) leaves fewer cores: a sum of one core takes that core's closed forms and
+  // axial paths, where a sum of several runs GJK and EPA on their sum (a cylinder plus a sphere
+  // against its copy ended at EPA's cap).
   Shape s = a;
-  s.cores_.insert(s.cores_.end(), b.cores_.begin(), b.cores_.end());
+  for (const Core& part : b.cores_) {
+    bool folded = false;
+    for (Core& core : s.cores_) {
+      // Either way round (a capsule's segment into a cylinder, or a cylinder into it); kept only
+      // when valid: two lengths near the largest double overflow.
+      Core trial = core;
+      if (!fold_core(trial, part)) {
+        trial = part;
+        if (!fold_core(trial, core)) continue;
+      }
+      if ((folded = !core_error(trial))) {
+        core = std::move(trial);
+        break;
+      }
+    }
+    if (!folded) s.cores_.push_back(part);
+  }
   s.radius_ = a.radius_ + b.radius_;
-  s.bounding_radius_ = a.bounding_radius_ + b.bounding_radius_;
+  s.bounding_radius_ = s.radius_;
+  for (const Core& core : s.cores_) s.bounding_radius_ += core_bounding_radius(core);
   return s;
 }
 
