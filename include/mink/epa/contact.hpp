@@ -335,21 +335,17 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // (1e-5 rad); Newton's steps (gjk/support_newton.hpp) take it, and the points (the support
     // points along it), to the rounding. Kept only as deep as EPA's upper end, to rounding.
     if (tolerances.refine_curved_normals && !epa.degenerate && epa.depth > touch) {
-      detail::SupportMinimum<S> least;
-      SimplexVertexT<S> start;
-      diff.support(n, start);
-      ++result.iterations;
-      least.offer(n.dot(start.w), n, start);
-      const S rounding = S(16) * std::numeric_limits<S>::epsilon() * start.w.cwiseAbs().maxCoeff();
+      auto least = detail::SupportMinimum<S>::at(diff, n, result.iterations);
+      const S rounding =
+          S(16) * std::numeric_limits<S>::epsilon() * least.vertex.w.cwiseAbs().maxCoeff();
       if (detail::newton_on_support(diff, size, tolerances.relative_depth * size, 3,
                                     result.iterations, least) > 0 &&
           least.value <= epa.upper + rounding) {
         n = least.normal;
         core_depth = std::max(S(0), least.value);
-        const Vec3T<S> residual =
-            S(0.5) * (least.vertex.a - least.vertex.b - core_depth * least.normal);
-        on_a = least.vertex.a - residual;
-        on_b = least.vertex.b + residual;
+        on_a = least.vertex.a;
+        on_b = least.vertex.b;
+        detail::share_residual(on_a, on_b, n, core_depth);
       }
     }
   }

@@ -160,19 +160,14 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
     // tolerance; Newton's steps (gjk/support_newton.hpp) take it to the rounding, and the points
     // become the support points along it, lined up at GJK's distance.
     if (tolerances.refine_curved_normals && gjk.upper > touch && std::isfinite(gjk.upper)) {
-      SupportMinimum<S> least;
-      SimplexVertexT<S> start;
-      diff.support(out.normal, start);
-      ++iterations;
-      least.offer(out.normal.dot(start.w), out.normal, start);
+      auto least = SupportMinimum<S>::at(diff, out.normal, iterations);
       if (newton_on_support(diff, size, tolerances.relative_depth * size, 3, iterations, least) >
           0) {
         out.normal = least.normal;
         out.lower = std::max(out.lower, -least.value);
-        const Vec3T<S> residual =
-            S(0.5) * (least.vertex.b - least.vertex.a - gjk.upper * least.normal);
-        out.on_a = least.vertex.a + residual;
-        out.on_b = least.vertex.b - residual;
+        out.on_a = least.vertex.a;
+        out.on_b = least.vertex.b;
+        share_residual(out.on_a, out.on_b, out.normal, -gjk.upper);
       }
     }
   }

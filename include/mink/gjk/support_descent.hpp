@@ -32,7 +32,30 @@ struct SupportMinimum {
       vertex = w;
     }
   }
+
+  /// The least so far of a search started at the unit n: its support point, one support call
+  /// counted in `iterations`.
+  template <class Difference>
+  static SupportMinimum at(const Difference& diff, const Vec3T<S>& n, int& iterations) {
+    SupportMinimum least;
+    SimplexVertexT<S> w;
+    diff.support(n, w);
+    ++iterations;
+    least.offer(n.dot(w.w), n, w);
+    return least;
+  }
 };
+
+/// Points a (of A's core) and b (of B's core) along the unit n moved so that a - b = depth n
+/// (depth < 0: apart by -depth), what is left of a - b - depth n shared evenly between them.
+/// Returns the length of that residual.
+template <class S>
+S share_residual(Vec3T<S>& a, Vec3T<S>& b, const Vec3T<S>& n, S depth) {
+  const Vec3T<S> half = S(0.5) * (a - b - depth * n);
+  a -= half;
+  b += half;
+  return S(2) * half.norm();
+}
 
 /// Lowers `best` (its value must be h(best.normal), its vertex that support point) by descent
 /// along great circles, stopping when a circle gains at most `gain_tol`, when `iterations`

@@ -177,12 +177,6 @@ bool touching_points(const CoreDifference<A, B>& diff, const Vec3T<typename A::S
                      Vec3T<typename A::Scalar>& a, Vec3T<typename A::Scalar>& b) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  auto share = [&n, depth](V& p, V& q) {
-    const V residual = S(0.5) * (p - q - depth * n);
-    p -= residual;
-    q += residual;
-    return S(2) * residual.norm();
-  };
   const S shift = depth + S(4) * tol.relative * size;
   const CoreDifference<A, B> moved{diff.a, diff.b, diff.rotation, V(diff.translation + shift * n)};
   const auto gjk = run_gjk_distance(moved, S(0), size, tol, nullptr);
@@ -192,9 +186,9 @@ bool touching_points(const CoreDifference<A, B>& diff, const Vec3T<typename A::S
     gjk.simplex.witness_points(on_a, on_b);
     on_b -= shift * n;
   }
-  const S given = share(a, b);
+  const S given = share_residual(a, b, n, depth);
   if (gjk.status != Status::Separated || !is_finite(on_a) || !is_finite(on_b)) return false;
-  if (!(share(on_a, on_b) < given)) return false;
+  if (!(share_residual(on_a, on_b, n, depth) < given)) return false;
   a = on_a;
   b = on_b;
   return true;
@@ -363,11 +357,7 @@ std::optional<AxialDepth<typename A::Scalar>> planar_depth(
   // and what is left of a - b - depth n (the offset of the support point along the section at the
   // cap) is shared between them so that on_b - on_a = -depth n holds. Off it, the points are the
   // projection's, and tilted_axial_depth() places its best plane's (touching_points()).
-  if (section) {
-    const V residual = S(0.5) * (a - b - out.depth * out.normal);
-    a -= residual;
-    b += residual;
-  }
+  if (section) share_residual(a, b, out.normal, out.depth);
   out.on_a = a;
   out.on_b = b;
   out.status = converged || upper - lower <= tol.relative_depth * size ? Status::Intersecting
@@ -564,11 +554,8 @@ void polish_capped_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
                          const TolerancesT<typename A::Scalar>& tol,
                          AxialDepth<typename A::Scalar>& out) {
   using S = typename A::Scalar;
-  SupportMinimum<S> least;
-  SimplexVertexT<S> start;
-  diff.support(out.normal, start);
-  least.offer(out.normal.dot(start.w), out.normal, start);
-  int iterations = 1;
+  int iterations = 0;
+  auto least = SupportMinimum<S>::at(diff, out.normal, iterations);
   const bool finite = descend_support(diff, out.depth - out.error_bound, tol.relative_depth * size,
                                       tol.max_iterations, iterations, least);
   out.iterations += iterations;
