@@ -5,6 +5,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/shapes/core_centre_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/shapes/shape_sum_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/oracle/oracle_self_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/oracle/curved.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/smoke_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/analytic_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/brute_force_test.cpp
@@ -29,6 +30,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_axial_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_ellipsoid_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_curved_normal_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_epa_budget_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/clip_box_pair_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_exact_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_property_test.cpp

@@ -25,7 +25,7 @@
 ///     face the new point lies in the plane of (a reflex, degenerate or folded new face) joins the
 ///     visible region and the expansion is tried again; if that does not help, the expansion is
 ///     undone and EPA stops with the bracket it has.
-///   - Every loop is capped (tolerances.max_iterations support calls), and the cap is a status.
+///   - Every loop is capped (tolerances.max_epa_iterations support calls), and the cap is a status.
 ///     A run that stops with its bracket open answers with the upper end (the least support
 ///     value seen and its direction), which always separates the shapes; the nearest face is only
 ///     a lower bound and its normal can be far from the answer.
@@ -639,7 +639,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     return expand_polytope(ws, f, w, size, flat_tol) ? Step::Expanded : Step::Stuck;
   };
   // The last quarter of the support calls is kept for the polish below.
-  const int global_budget = tol.max_iterations - tol.max_iterations / 4;
+  const int global_budget = tol.max_epa_iterations - tol.max_epa_iterations / 4;
   int best = ws.nearest();
   Step last = Step::Expanded;
   while (out.iterations < global_budget && (last = step(best)) == Step::Expanded)
@@ -657,8 +657,8 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   // normals: descend_support() from the best normal seen. The upper end can only go down.
   best = ws.nearest();
   const bool polished = !converged && least.value < std::numeric_limits<S>::infinity();
-  if (polished && !descend_support(diff, ws.faces[best].distance(), gain_tol, tol.max_iterations,
-                                   out.iterations, least)) {
+  if (polished && !descend_support(diff, ws.faces[best].distance(), gain_tol,
+                                   tol.max_epa_iterations, out.iterations, least)) {
     out.status = Status::InvalidInput;
     return out;
   }

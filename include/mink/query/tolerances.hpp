@@ -21,13 +21,20 @@ struct TolerancesT {
   /// the depth is then within that of the exact one (polytopes and boxes converge exactly, curved
   /// cores linearly, hence a looser default than `relative`). (unit: dimensionless)
   S relative_depth = std::max(S(1e-10), S(64) * std::numeric_limits<S>::epsilon());
-  /// Cap on support evaluations (per GJK run and per EPA run); hitting it gives
+  /// Cap on support evaluations per GJK run (and per plane of query/axial_pair.hpp's planar path,
+  /// which solids of revolution with parallel or nearly parallel axes take); hitting it gives
   /// Status::IterationLimit. Polytopes need about 3 + log(points) iterations and GJK on curved
-  /// shapes a few dozen; EPA on penetrating curved shapes can need hundreds, and where a circle
-  /// of normals is nearly as good it runs to the cap (docs/conventions.md). Solids of revolution
-  /// with parallel or nearly parallel axes take the planar path of query/axial_pair.hpp instead,
-  /// which this caps per plane.
+  /// shapes a few dozen.
   int max_iterations = 512;
+  /// Cap on support evaluations per EPA run (three quarters for expanding its polytope, the rest
+  /// for the polish of its upper end); hitting it gives Status::IterationLimit with the least
+  /// support value seen and its bracket. EPA on penetrating curved shapes needs hundreds; where
+  /// many normals are nearly as good it needs more: 500 to 3,000 on near-coincident ellipsoids
+  /// (A - B nearly symmetric, with two nearly equal minima on a flat support function) and on unit
+  /// curved shapes at the corner of a face 1e3 times larger, about 0.2 us each on those polytopes
+  /// of 1,000 to 6,000 faces (docs/benchmarks.md, "Stop 50"). Where a whole circle of normals is
+  /// as good it runs to the cap (docs/conventions.md).
+  int max_epa_iterations = 2048;
   /// Curved pairs (a cylinder, cone or ellipsoid on either side): refine the normal, and the
   /// points with it, by Newton's method on the support function after GJK and EPA
   /// (gjk/support_newton.hpp). Their value tolerances leave a smooth minimum's normal off by
