@@ -8,6 +8,11 @@
 
 namespace oracle {
 
+/// A mink pose as the oracle takes it, in long double.
+inline RigidPose to_oracle_pose(const mink::Pose& p) {
+  return {p.rotation.cast<Real>(), p.translation.cast<Real>()};
+}
+
 /// f(mink shape) for the shape s describes (its dimensions rounded to double).
 template <class F>
 auto with_mink_shape(const CurvedShape& s, F&& f) {

@@ -11,6 +11,7 @@
 
 #include "mink/mink.hpp"
 #include "oracle/curved.hpp"
+#include "oracle/curved_to_mink.hpp"
 #include "oracle/random.hpp"
 
 namespace {
@@ -22,10 +23,6 @@ using oracle::CurvedShape;
 using oracle::Real;
 using oracle::RigidPose;
 using oracle::V3;
-
-RigidPose widen(const Pose& p) {
-  return {p.rotation.cast<Real>(), p.translation.cast<Real>()};
-}
 
 TEST(ContactEllipsoid, SphereMatchesTheLeastSupportValue) {
   const int count = oracle::sweep_count(80, 24);
@@ -64,7 +61,7 @@ TEST(ContactEllipsoid, SphereMatchesTheLeastSupportValue) {
     ca.radius = sphere.radius;
     cb.kind = CurvedKind::Ellipsoid;
     cb.extents = radii.cast<Real>();
-    const RigidPose wa = widen(pa), wb = widen(pb);
+    const RigidPose wa = oracle::to_oracle_pose(pa), wb = oracle::to_oracle_pose(pb);
     const Real least = oracle::curved_depth(ca, wa, cb, wb).depth;  // minus the distance apart
     if ((local.cwiseQuotient(radii)).squaredNorm() < 1) ++inside;
     for (const bool swap : {false, true}) {

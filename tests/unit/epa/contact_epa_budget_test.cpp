@@ -29,12 +29,7 @@ using mink::Vec3;
 using oracle::CurvedKind;
 using oracle::CurvedShape;
 using oracle::Real;
-using oracle::RigidPose;
 using oracle::V3;
-
-RigidPose widen(const Pose& p) {
-  return {p.rotation.cast<Real>(), p.translation.cast<Real>()};
-}
 
 TEST(ContactEpaBudget, CurvedPairsThatNeedMoreThan512SupportCalls) {
   struct Case {
@@ -79,13 +74,14 @@ TEST(ContactEpaBudget, CurvedPairsThatNeedMoreThan512SupportCalls) {
     const auto r =
         mink::contact(oracle::to_mink_shape(c.a), c.pose_a, oracle::to_mink_shape(c.b), c.pose_b);
     ASSERT_EQ(r.status, mink::Status::Intersecting) << "error bound " << r.error_bound;
-    const auto expected = oracle::curved_depth(c.a, widen(c.pose_a), c.b, widen(c.pose_b));
+    const auto expected = oracle::curved_depth(c.a, oracle::to_oracle_pose(c.pose_a), c.b,
+                                               oracle::to_oracle_pose(c.pose_b));
     const double size =
         static_cast<double>(oracle::bounding_radius(c.a) + oracle::bounding_radius(c.b));
     EXPECT_NEAR(r.depth, static_cast<double>(expected.depth), 1e-9 * size);
     const V3 n = r.normal.cast<Real>();
-    const Real h = oracle::world_support(c.a, widen(c.pose_a), n) +
-                   oracle::world_support(c.b, widen(c.pose_b), -n);
+    const Real h = oracle::world_support(c.a, oracle::to_oracle_pose(c.pose_a), n) +
+                   oracle::world_support(c.b, oracle::to_oracle_pose(c.pose_b), -n);
     EXPECT_NEAR(static_cast<double>(h), r.depth, 1e-10 * size) << "the normal is not the depth's";
     EXPECT_LE((r.point_b - r.point_a + r.depth * r.normal).norm(), 1e-12 * size);
   }
@@ -147,8 +143,8 @@ TEST(ContactEpaBudget, UnitCurvedShapesAtTheVertexOfALargePolytope) {
     auto h = [&](const Vec3& u) {
       double h_a = -INFINITY;
       for (const Vec3& p : c.points) h_a = std::max(h_a, u.dot(c.pose_a.apply(p)));
-      return h_a +
-             static_cast<double>(oracle::world_support(c.b, widen(c.pose_b), V3(-u.cast<Real>())));
+      return h_a + static_cast<double>(oracle::world_support(c.b, oracle::to_oracle_pose(c.pose_b),
+                                                             V3(-u.cast<Real>())));
     };
     double size = oracle::bounding_radius(c.b);
     for (const Vec3& p : c.points)
