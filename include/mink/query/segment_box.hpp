@@ -22,6 +22,7 @@
 #include <optional>
 
 #include "mink/gjk/segment_cores.hpp"
+#include "mink/math/orthogonal.hpp"
 #include "mink/query/box_box.hpp"
 #include "mink/query/point_solid.hpp"
 
@@ -38,11 +39,14 @@ inline constexpr bool kSegmentBox = (kLineCore<A> && BoxCore<B>::value) ||
                                     (BoxCore<A>::value && kLineCore<B>);
 
 /// The closest points of the segment c + t d (t in [-1, 1]) and the box of half extents h (both
-/// in the box's frame), and the segment's point minus the box's (0 when they meet). Nothing when
-/// the arithmetic overflows.
+/// in the box's frame), and the segment's point minus the box's (0 when they meet), with the
+/// segment's parameter t and direction d. Nothing when the arithmetic overflows.
 template <class S>
 struct SegmentBoxLocal {
   Vec3T<S> on_segment, on_box, gap;
+  Vec3T<S> along;  ///< d
+  S t;
+  S terms_sq;  ///< |c|^2 + |d|^2 + |h|^2: the scale of the points' rounding
 };
 
 template <class S>
@@ -72,6 +76,9 @@ std::optional<SegmentBoxLocal<S>> segment_box_local(const Vec3T<S>& c, const Vec
     out.on_segment = c + t * d;
     out.on_box = out.on_segment.cwiseMax(-h).cwiseMin(h);
     out.gap = out.on_segment - out.on_box;
+    out.along = d;
+    out.t = t;
+    out.terms_sq = c.squaredNorm() + d.squaredNorm() + h.squaredNorm();
     if (!is_finite(out.on_segment) || !is_finite(out.gap)) return std::nullopt;
     return out;
   };
@@ -113,6 +120,29 @@ std::optional<SegmentBoxLocal<S>> segment_box_local(const Vec3T<S>& c, const Vec
   return answer(S(0.5) * (first + last));
 }
 
+/// The unit direction of the gap of segment_box_local()'s answer when it is tiny next to the
+/// points it came from, `plain` its plain quotient: the gap is a difference of points some L from
+/// the box's centre, good to eps L in each coordinate on which the point lies beyond a face, and
+/// cores 1e-11 L apart had a normal 1e-5 rad off, whose support value along it missed the distance
+/// by 1e-5 of the size. The true direction is orthogonal to the segment where its point is
+/// interior, and to every box axis on which the point lies within the box's slab (there the gap
+/// is exactly 0 already); beyond one face only, the gap is along that face's axis exactly.
+template <class S>
+Vec3T<S> segment_box_direction(const SegmentBoxLocal<S>& local, const Vec3T<S>& plain) {
+  if (!(std::abs(local.t) < S(1))) return plain;  // an end point: no constraint along the segment
+  int beyond = 0, within = -1;
+  for (int i = 0; i < 3; ++i) {
+    if (local.gap[i] != S(0))
+      ++beyond;
+    else
+      within = i;
+  }
+  if (beyond < 2) return plain;
+  Vec3T<S> n = local.gap;
+  const Vec3T<S> slab = beyond == 2 ? Vec3T<S>(Vec3T<S>::Unit(within)) : Vec3T<S>(Vec3T<S>::Zero());
+  return make_orthogonal(n, local.along, slab) ? n : plain;
+}
+
 /// segment_box_local() for a pair (either order): in the box's frame.
 template <class A, class B>
 std::optional<SegmentBoxLocal<typename A::Scalar>> segment_box_pair_local(
@@ -146,8 +176,10 @@ std::optional<CorePair<typename A::Scalar>> segment_box_world(
   const S gap_sq = local->gap.squaredNorm();
   const S distance = length_of(local->gap, gap_sq);
   // From the box towards the segment; +z of the box when they meet (unused then).
-  const Vec3T<S> out_of_box =
+  Vec3T<S> out_of_box =
       distance > S(0) ? Vec3T<S>(unit_of(local->gap, gap_sq, distance)) : Vec3T<S>::UnitZ();
+  if (distance > S(0) && gap_sq < S(1e-6) * local->terms_sq)
+    out_of_box = segment_box_direction(*local, out_of_box);
   const CorePair<S> out =
       ordered_core_pair<kBoxIsA>(box_pose.apply(local->on_box), box_pose.apply(local->on_segment),
                                  box_pose.rotate(out_of_box), distance, false);

@@ -4,7 +4,9 @@
 // origin, both orders, and the needle pair on which GJK stalled.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "mink/mink.hpp"
 #include "oracle/analytic.hpp"
@@ -160,6 +162,93 @@ TEST(SegmentBox, NeedleCapsuleBesideANeedleBox) {
     EXPECT_TRUE(swap ? mink::intersect(box, pb, capsule, pa).intersect
                      : mink::intersect(capsule, pa, box, pb).intersect);
   }
+}
+
+/// h_A(n) + h_B(-n) for a segment A (end points p, q) and a box B, from their definitions: the
+/// least separation the direction n proves is minus this.
+double segment_box_support(const Vec3& p, const Vec3& q, const mink::Box& box, const Pose& pose,
+                           const Vec3& n) {
+  double h_box = -n.dot(pose.translation);
+  for (int i = 0; i < 3; ++i) h_box += box.half_extents[i] * std::abs(n.dot(pose.rotation.col(i)));
+  return std::max(n.dot(p), n.dot(q)) + h_box;
+}
+
+TEST(SegmentBox, NearlyTouchingCoresKeepAnOptimalNormal) {
+  // Found by an adversarial probe (stop 50): a segment 1.4e-11 from a cube's edge, skew to it,
+  // had a normal 9.6e-6 rad off (the unit gap of points 1 from the box's centre, each good to
+  // 1e-16), along which the shapes' projections overlapped by 1.3e-5 though they are apart. The
+  // direction is orthogonal to the segment and to the edge: their cross product.
+  const mink::Box cube{Vec3(1, 1, 1)};
+  const Vec3 p(0.5775559648577047, -0.224092, 2.310837988674685),
+      q(1.1638969648577047, -0.738037, 0.49142998867468507);
+  const auto probe = mink::contact(mink::Segment{p, q}, Pose{}, cube, Pose{});
+  ASSERT_EQ(probe.status, mink::Status::Separated);
+  EXPECT_NEAR(segment_box_support(p, q, cube, Pose{}, probe.normal), -probe.distance, 1e-15);
+  // Segments skew to an edge (the point beyond two faces), past a corner (three) and beside a
+  // face (one), 1e-13 to 1e-6 of the size apart, at random poses up to 1e3 from the origin; the
+  // capsules' cores sunk to within that of their radius. The normal's support value must prove
+  // the distance: only rounding may separate them.
+  Rng rng(5003);
+  double worst = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const mink::Box box{
+        Vec3(rng.log_uniform(0.01, 2), rng.log_uniform(0.01, 2), rng.log_uniform(0.01, 2))};
+    const Pose pose_box = rng.pose(i % 3 == 0 ? 1e3 : 1);
+    const Vec3& h = box.half_extents;
+    const double size = h.norm() + 2;
+    const double gap = size * rng.log_uniform(1e-13, 1e-6);
+    // A box point on an edge, a corner or a face, and a direction out of the box there.
+    const int region = i % 3;
+    Vec3 at, out;
+    const double sx = rng.chance(0.5) ? 1 : -1, sy = rng.chance(0.5) ? 1 : -1;
+    const double sz = rng.chance(0.5) ? 1 : -1;
+    if (region == 0) {  // the edge along z at (sx hx, sy hy)
+      at = Vec3(sx * h.x(), sy * h.y(), rng.uniform(-h.z(), h.z()) * 0.9);
+      const double angle = rng.uniform(0.05, 1.52);
+      out = Vec3(sx * std::cos(angle), sy * std::sin(angle), 0);
+    } else if (region == 1) {  // the corner
+      at = Vec3(sx * h.x(), sy * h.y(), sz * h.z());
+      out = Vec3(sx * rng.uniform(0.1, 1), sy * rng.uniform(0.1, 1), sz * rng.uniform(0.1, 1))
+                .normalized();
+    } else {  // the face +-z
+      at = Vec3(rng.uniform(-h.x(), h.x()) * 0.9, rng.uniform(-h.y(), h.y()) * 0.9, sz * h.z());
+      out = Vec3(0, 0, sz);
+    }
+    // The segment through at + gap out, orthogonal to out, turned at random about it.
+    const Vec3 across = mink::detail::orthogonal(out).normalized();
+    const double turn = rng.uniform(0, 2 * M_PI);
+    const Vec3 along =
+        (std::cos(turn) * across + std::sin(turn) * out.cross(across)) * rng.log_uniform(0.05, 2);
+    const double t = rng.uniform(-0.9, 0.9);
+    const Vec3 centre = at + gap * out - t * along;
+    // The segment about its own centre (its pose's translation), so that its bounding radius,
+    // and with it the touching tolerance, is its own size.
+    const Pose pose_segment = Pose::from_translation(pose_box.apply(centre));
+    const Vec3 world_along = pose_box.rotate(along);
+    const Vec3 wp = pose_segment.translation - world_along,
+               wq = pose_segment.translation + world_along;
+    const double radius = rng.chance(0.5) ? 0.0 : rng.log_uniform(0.01, 1);
+    SCOPED_TRACE(testing::Message() << "case " << i << ", region " << region << ", gap " << gap
+                                    << ", radius " << radius);
+    const mink::Segment segment{-world_along, world_along};
+    const auto r = radius == 0 ? mink::contact(segment, pose_segment, box, pose_box)
+                               : mink::contact(mink::Rounded<mink::Segment>{segment, radius},
+                                               pose_segment, box, pose_box);
+    ASSERT_NE(r.status, mink::Status::InvalidInput);
+    const double touch =
+        mink::Tolerances{}.relative * (segment.bounding_radius() + radius + box.bounding_radius());
+    const double signed_depth = r.intersect ? r.depth : -r.distance;
+    // The support value of the cores along n, plus the radius: the shapes' signed depth along n.
+    const double along_n = segment_box_support(wp, wq, box, pose_box, r.normal) + radius;
+    const double rounding = 1e-15 * (size + pose_box.translation.norm());
+    worst = std::max(worst, std::abs(along_n - signed_depth) / size);
+    // Cores that touch within the tolerance answer a core depth of 0 (the depth is the radius):
+    // the normal proves no more than that.
+    const bool cores_touch = gap <= touch + rounding;
+    EXPECT_NEAR(along_n, signed_depth, rounding + (cores_touch ? touch : 0));
+    EXPECT_NEAR(signed_depth, radius - gap, rounding + touch);
+  }
+  std::printf("[  worst   ] support gap along the normal %.3g of the size\n", worst);
 }
 
 TEST(SegmentBox, CapsuleLyingBesideAFaceTakesTheMiddleOfTheStretch) {
