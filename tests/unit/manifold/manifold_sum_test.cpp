@@ -115,7 +115,7 @@ TEST(ManifoldSum, CurvedPartsKeepThePointsOnTheShapes) {
                                Part::kEllipsoid};
   const int count = oracle::sweep_count(1500, 300);
   int penetrating = 0, multi = 0;
-  double worst_beyond = 0, worst_deeper = 0, worst_contact = 0;
+  double worst_beyond = 0, worst_deeper = 0, worst_contact = 0, worst_shallower = 0;
   for (int k = 0; k < count; ++k) {
     Rng rng(620000 + k);
     const std::vector<Part> a = {random_part(rng, flat[k % 2]), random_part(rng, curved[k % 3])};
@@ -134,6 +134,10 @@ TEST(ManifoldSum, CurvedPartsKeepThePointsOnTheShapes) {
     worst_contact = std::max(worst_contact, std::abs(h_a + h_b - c.depth) / size);
     const mink::ManifoldResult m = mink::manifold(sa, pa, sb, pb);
     ASSERT_GE(m.count, 1) << oracle::seed_note(k);
+    // The deepest point comes first, and it is the contact's depth.
+    const double shallower = (c.depth - m.points[0].depth) / size;
+    worst_shallower = std::max(worst_shallower, shallower);
+    EXPECT_LE(shallower, 1e-9) << oracle::seed_note(k) << " the deepest point is missing";
     ++penetrating;
     multi += m.count > 1;
     for (int i = 0; i < m.count; ++i) {
@@ -152,8 +156,49 @@ TEST(ManifoldSum, CurvedPartsKeepThePointsOnTheShapes) {
   EXPECT_LE(worst_contact, 1e-6);
   std::printf(
       "[manifold sum] %d penetrating pairs (%d with several points); worst / size: beyond a "
-      "support plane %.1e, deeper than contact %.1e, contact depth vs support function %.1e\n",
-      penetrating, multi, worst_beyond, worst_deeper, worst_contact);
+      "support plane %.1e, deeper than contact %.1e, deepest shallower than contact %.1e, contact "
+      "depth vs support function %.1e\n",
+      penetrating, multi, worst_beyond, worst_deeper, worst_shallower, worst_contact);
+}
+
+TEST(ManifoldSum, TheDeepestPointIsTheContacts) {
+  // Found by an adversarial probe (stop 50): a rounded cylinder deep in a sum of a polytope and a
+  // segment. The features clipped gave one point 0.1 shallower than the depth (3 % of the size);
+  // with A and B swapped, the full depth. The contact's own pair joins the clipped points then.
+  const Shape a = Shape::rounded(Shape::cylinder(0.8425582345519447, 0.20929915373453292).value(),
+                                 0.13550819092243838)
+                      .value();
+  const std::vector<Vec3> points = {
+      Vec3(0.9202457298151492, -0.13149034064279133, -0.9648531707964445),
+      Vec3(0.4142971661257362, -0.8853347449641352, -1.3506525929482345),
+      Vec3(0.7005284316003463, 0.2847261745009616, 0.7615575059520874),
+      Vec3(0.04068493039609787, 0.5456006582446793, 0.9259879364991043),
+      Vec3(-0.06602794771528918, -0.33830673461308913, 0.9368533843942811),
+      Vec3(-0.14617999283806313, 0.346377137607276, 0.938370890720888)};
+  const Shape b =
+      Shape::sum(Shape::polytope(points).value(),
+                 Shape::segment(Vec3(0.2269767199509014, 0.2147354548415225, -0.12656325634220725),
+                                Vec3(-0.3285492024338373, -0.2330279696206798, 0.2669226135717763))
+                     .value())
+          .value();
+  const Pose pa = Pose::from(Vec3(-0.3560689047383339, -0.032739524348275637, -0.2418026236866008),
+                             mink::Quat(0.038413656385672804, 0.3326545093283456,
+                                        -0.938341837068599, -0.08590672402861269));
+  const Pose pb = Pose::from(Vec3(-0.42761108298821804, 0.05254812299357969, -0.06686840146103662),
+                             mink::Quat(0.2285356606814353, -0.7958781110071856, 0.5020473746360795,
+                                        -0.24959550844827674));
+  const double size = a.bounding_radius() + b.bounding_radius();
+  for (const bool swap : {false, true}) {
+    SCOPED_TRACE(swap ? "B, A" : "A, B");
+    const auto c = swap ? mink::contact(b, pb, a, pa) : mink::contact(a, pa, b, pb);
+    const auto m = swap ? mink::manifold(b, pb, a, pa) : mink::manifold(a, pa, b, pb);
+    ASSERT_EQ(c.status, mink::Status::Intersecting);
+    ASSERT_GE(m.count, 1);
+    EXPECT_NEAR(m.points[0].depth, c.depth, 1e-9 * size);
+    EXPECT_LE((m.points[0].point_b - m.points[0].point_a + m.points[0].depth * m.normal).norm(),
+              1e-12 * size);
+    for (int i = 1; i < m.count; ++i) EXPECT_LE(m.points[i].depth, m.points[0].depth);
+  }
 }
 
 }  // namespace
