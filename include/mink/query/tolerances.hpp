@@ -26,6 +26,13 @@ struct TolerancesT {
   /// Status::IterationLimit. Polytopes need about 3 + log(points) iterations and GJK on curved
   /// shapes a few dozen.
   int max_iterations = 512;
+  /// Curved pairs (a cylinder, cone or ellipsoid on either side): refine the normal, and the
+  /// points with it, by Newton's method on the support function after GJK and EPA
+  /// (gjk/support_newton.hpp). Their value tolerances leave a smooth minimum's normal off by
+  /// their square root (up to 2e-5 rad); refined, it is good to about 1e-9 (a cone's kink, 1e-6),
+  /// for 10-90 % more time on those pairs (docs/benchmarks.md, "Stop 49"). Off: GJK's and EPA's
+  /// own normal.
+  bool refine_curved_normals = true;
   /// Cap on support evaluations per EPA run (three quarters for expanding its polytope, the rest
   /// for the polish of its upper end); hitting it gives Status::IterationLimit with the least
   /// support value seen and its bracket. EPA on penetrating curved shapes needs hundreds; where
@@ -34,14 +41,9 @@ struct TolerancesT {
   /// curved shapes at the corner of a face 1e3 times larger, about 0.2 us each on those polytopes
   /// of 1,000 to 6,000 faces (docs/benchmarks.md, "Stop 50"). Where a whole circle of normals is
   /// as good it runs to the cap (docs/conventions.md).
+  /// (Last, as refine_curved_normals before it: fields are only ever appended, so that braced
+  /// initialisers in order keep their meaning.)
   int max_epa_iterations = 2048;
-  /// Curved pairs (a cylinder, cone or ellipsoid on either side): refine the normal, and the
-  /// points with it, by Newton's method on the support function after GJK and EPA
-  /// (gjk/support_newton.hpp). Their value tolerances leave a smooth minimum's normal off by
-  /// their square root (up to 2e-5 rad); refined, it is good to about 1e-9 (a cone's kink, 1e-6),
-  /// for 10-90 % more time on those pairs (docs/benchmarks.md, "Stop 49"). Off: GJK's and EPA's
-  /// own normal.
-  bool refine_curved_normals = true;
 };
 
 using Tolerances = TolerancesT<double>;
