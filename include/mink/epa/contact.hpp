@@ -303,11 +303,7 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
       return result;
   }
   // The cores meet (or may): EPA on the cores, then add the radii.
-  // unit_of(): two spheres' centres 5e-159 apart have a subnormal square, and the plain quotient
-  // was 2e-8 off unit.
-  const Vec3T<S> fallback =
-      diff.translation != Vec3T<S>::Zero() ? detail::unit_of(diff.translation) : Vec3T<S>::UnitZ();
-  const auto epa = detail::run_epa(diff, gjk.simplex, size, tolerances, fallback);
+  const auto epa = detail::run_epa(diff, gjk.simplex, size, tolerances, detail::epa_fallback(diff));
   result.iterations += epa.iterations;
   if (epa.status == Status::InvalidInput) {
     result.error = detail::kOverflowError;

@@ -789,6 +789,15 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   return out;
 }
 
+/// run_epa()'s `fallback` for a pair: the line of centres, or +z when they coincide. unit_of():
+/// two spheres' centres 5e-159 apart have a subnormal square, and the plain quotient was 2e-8 off
+/// unit.
+template <ConvexShape A, ConvexShape B>
+Vec3T<typename A::Scalar> epa_fallback(const CoreDifference<A, B>& diff) {
+  using S = typename A::Scalar;
+  return diff.translation != Vec3T<S>::Zero() ? unit_of(diff.translation) : Vec3T<S>::UnitZ();
+}
+
 /// separate_cores() for distance() and intersect(), with contact()'s word on cores that GJK
 /// neither proved apart nor found meeting: its bracket on their distance straddles the touching
 /// tolerance (curved cores grazing a thin plate, whose GJK crawls to its cap). contact() runs EPA
@@ -804,9 +813,7 @@ CoreSeparation<typename A::Scalar> settle_cores(const CoreDifference<A, B>& diff
   auto cores = separate_cores(diff, gjk, radii, size, tolerances, iterations);
   const S touch = tolerances.relative * size;
   if (cores.status != Status::IterationLimit || !(cores.lower <= touch)) return cores;
-  const Vec3T<S> fallback =
-      diff.translation != Vec3T<S>::Zero() ? unit_of(diff.translation) : Vec3T<S>::UnitZ();
-  const auto epa = run_epa(diff, gjk.simplex, size, tolerances, fallback);
+  const auto epa = run_epa(diff, gjk.simplex, size, tolerances, epa_fallback(diff));
   iterations += epa.iterations;
   if (epa.status == Status::Intersecting && !epa.degenerate && !(epa.upper < -touch))
     cores.status = Status::Intersecting;
