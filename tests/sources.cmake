@@ -15,6 +15,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/float_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/warm_start_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/boolean_phase_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/polytope_pair_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/curved_separation_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/point_polytope_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/segment_box_test.cpp

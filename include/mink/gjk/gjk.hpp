@@ -620,12 +620,15 @@ struct GjkBooleanOutcome {
 /// recombination in run_gjk_distance(); needles, whose thin simplices round), it says so
 /// (`stalled`) and the caller hands the question to run_gjk_distance(), which has the witness
 /// points to get unstuck.
+///
+/// `first` (optional): the support point along diff.translation (as the first phase would take
+/// it), already computed by the caller, who passes it only where the first phase runs (radius 0,
+/// no usable cache); it counts as one iteration.
 template <ConvexShape A, ConvexShape B>
-GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>& diff,
-                                                      typename A::Scalar radius,
-                                                      typename A::Scalar size,
-                                                      const TolerancesT<typename A::Scalar>& tol,
-                                                      GjkCacheT<typename A::Scalar>* cache) {
+GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(
+    const CoreDifference<A, B>& diff, typename A::Scalar radius, typename A::Scalar size,
+    const TolerancesT<typename A::Scalar>& tol, GjkCacheT<typename A::Scalar>* cache,
+    const PointAndDirection<typename A::Scalar>* first = nullptr) {
   using S = typename A::Scalar;
   GjkBooleanOutcome<S> out;
   Vec3T<S> points[4], directions[4];
@@ -648,9 +651,10 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(const CoreDifference<A, B>
   if (radius == S(0) && !warm) {
     // Cores with no radius: the cheap first phase decides most pairs; the loop below takes the
     // rest (the origin near the boundary of A - B), from a fresh start.
+    out.iterations = first ? 1 : 0;
     const EncloseVerdict verdict =
         enclose_origin(diff, inside, std::min(kEnclosePhaseSupports, tol.max_iterations),
-                       out.iterations, directions, count);
+                       out.iterations, directions, count, first);
     if (verdict != EncloseVerdict::Unsure) {
       out.status =
           verdict == EncloseVerdict::Intersecting ? Status::Intersecting : Status::Separated;

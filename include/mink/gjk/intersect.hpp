@@ -22,6 +22,7 @@
 #include "mink/gjk/separation.hpp"
 #include "mink/query/box_box.hpp"
 #include "mink/query/point_solid.hpp"
+#include "mink/query/polytope_pair.hpp"
 #include "mink/query/segment_box.hpp"
 
 namespace mink {
@@ -114,7 +115,26 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     }
   }
   const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
-  const auto gjk = detail::run_gjk_boolean(diff, radius, size, tolerances, cache);
+  detail::PointAndDirection<S> first;
+  const detail::PointAndDirection<S>* first_computed = nullptr;
+  if constexpr (detail::kPolytopePair<A, B>) {
+    // Two small polytopes: the first support call's points may prove the overlap
+    // (query/polytope_pair.hpp); else GJK's first phase starts from that support point.
+    if (radius == S(0) && !detail::cache_is_usable(cache)) {
+      const detail::EncloseVerdict verdict =
+          detail::first_support_verdict(diff, reach, first);  // radius 0
+      if (verdict != detail::EncloseVerdict::Unsure) {
+        result.intersect = verdict == detail::EncloseVerdict::Intersecting;
+        result.status = result.intersect ? Status::Intersecting : Status::Separated;
+        result.iterations = 1;
+        detail::save_cache(
+            cache, 1, [&first](int) { return first.dir; }, Vec3T<S>(Vec3T<S>::Zero()));
+        return result;
+      }
+      first_computed = &first;
+    }
+  }
+  const auto gjk = detail::run_gjk_boolean(diff, radius, size, tolerances, cache, first_computed);
   if (gjk.stalled) [[unlikely]] {
     // The distance loop and distance()'s rule decide, so that the two never disagree: the
     // distance loop's own Separated is not a proof (a needle 1e-8 thick that a box penetrated by

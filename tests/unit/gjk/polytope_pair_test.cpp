@@ -1,0 +1,145 @@
+// intersect() of two small polytopes with face planes (query/polytope_pair.hpp): a point of the
+// first support call that lies inside the other polytope proves the overlap. Checked against brute
+// force over the Minkowski difference of the points, and against the same polytopes without
+// planes (GJK alone), from deep overlaps to gaps within rounding of touching, far from the world
+// origin too.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "mink/mink.hpp"
+#include "oracle/brute_force.hpp"
+#include "oracle/random.hpp"
+
+namespace {
+
+using mink::Pose;
+using mink::Vec3;
+
+std::vector<Vec3> random_points(oracle::Rng& rng, int n) {
+  // On an ellipsoid (every point a vertex) or in a box (some inside), about the origin.
+  const Vec3 axes(rng.uniform(0.3, 1), rng.uniform(0.3, 1), rng.uniform(0.3, 1));
+  const bool on_surface = rng.chance(0.5);
+  std::vector<Vec3> points;
+  for (int k = 0; k < n; ++k) {
+    if (on_surface) {
+      points.push_back(axes.cwiseProduct(rng.unit()));
+    } else {
+      points.push_back(
+          Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)).cwiseProduct(axes));
+    }
+  }
+  return points;
+}
+
+std::vector<oracle::V3> world_points(const std::vector<Vec3>& points, const Pose& pose) {
+  std::vector<oracle::V3> out;
+  for (const Vec3& p : points)
+    out.push_back(oracle::widen(pose.rotation) * oracle::widen(p) +
+                  oracle::widen(pose.translation));
+  return out;
+}
+
+/// A point of `points` farthest along u (world frame, long double).
+oracle::V3 farthest(const std::vector<oracle::V3>& points, const oracle::V3& u) {
+  oracle::V3 best = points.front();
+  for (const oracle::V3& p : points)
+    if (u.dot(p) > u.dot(best)) best = p;
+  return best;
+}
+
+TEST(PolytopePair, CommonPointAgreesWithBruteForceAndWithGjk) {
+  const int n = oracle::sweep_count(1500, 300);
+  int overlapping = 0, separated = 0, proven_by_a_point = 0, planes_missing = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = 515000 + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    oracle::Rng rng(seed);
+    const std::vector<Vec3> a_points = random_points(rng, rng.integer(4, 10));
+    const std::vector<Vec3> b_points = random_points(rng, rng.integer(4, 10));
+    const auto a = mink::Polytope::make(a_points);
+    const auto b = mink::Polytope::make(b_points);
+    const auto a_plain = mink::Polytope::make(a_points);
+    const auto b_plain = mink::Polytope::make(b_points);
+    ASSERT_TRUE(a && b && a_plain && b_plain);
+    planes_missing += !a->build_face_planes() || !b->build_face_planes();
+
+    // B's point farthest along -u placed at A's point farthest along u, then moved by `gap` along
+    // u: touching at that point for gap 0, apart by gap above it, overlapping below it.
+    const Vec3 offset = rng.chance(0.25) ? Vec3(-3e5, 1e6, 2e6) : Vec3::Zero();
+    const Pose pa = Pose::from(offset, rng.rotation());
+    Pose pb = Pose::from(Vec3::Zero(), rng.rotation());
+    const Vec3 u = rng.unit();
+    const double size = a->bounding_radius() + b->bounding_radius();
+    const double gaps[] = {-0.3, -0.1, -1e-3, -1e-6, -1e-9, -1e-11, 0, 1e-11, 1e-9, 1e-6, 1e-3};
+    const double gap = gaps[i % 11] * size;
+    const oracle::V3 on_a = farthest(world_points(a_points, pa), oracle::widen(u));
+    const oracle::V3 on_b = farthest(world_points(b_points, pb), oracle::widen(Vec3(-u)));
+    pb.translation = (on_a - on_b + oracle::widen(u) * oracle::Real(gap)).cast<double>();
+
+    const double distance = double(
+        oracle::polytope_pair(world_points(a_points, pa), world_points(b_points, pb)).distance);
+    const auto got = mink::intersect(*a, pa, *b, pb);
+    const auto plain = mink::intersect(*a_plain, pa, *b_plain, pb);
+    ASSERT_EQ(got.status == mink::Status::Intersecting || got.status == mink::Status::Separated,
+              true)
+        << "status " << int(got.status);
+    // Touching counts as intersecting up to 1e-12 of the size: closer than that must intersect,
+    // farther than 1e-11 of it must not; between, either (as for every boolean test).
+    if (distance > 1e-11 * size) {
+      EXPECT_FALSE(got.intersect) << "distance " << distance;
+    }
+    if (distance <= 1e-12 * size) {
+      EXPECT_TRUE(got.intersect) << "distance " << distance;
+    }
+    if (distance > 1e-11 * size || distance == 0) {
+      EXPECT_EQ(got.intersect, plain.intersect) << "distance " << distance;
+    }
+    overlapping += distance == 0;
+    separated += distance > 1e-11 * size;
+    proven_by_a_point += got.intersect && got.iterations == 1;
+  }
+  EXPECT_EQ(planes_missing, 0);
+  EXPECT_GT(overlapping, n / 3);
+  EXPECT_GT(separated, n / 4);
+  // The path is taken: a common point after one support call for a good share of overlaps.
+  EXPECT_GT(proven_by_a_point, overlapping / 4);
+}
+
+std::vector<Vec3> cube_corners(double half) {
+  std::vector<Vec3> corners;
+  for (int k = 0; k < 8; ++k)
+    corners.push_back(half * Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+  return corners;
+}
+
+// A small cube inside a large one's face: B's corner farthest towards A is inside A. Without face
+// planes (a new polytope, before kPolytopePlanesAfterQueries queries) GJK decides; with them the
+// corner does, after one support call, and the cache keeps its direction; a warm cache then
+// starts GJK from it.
+TEST(PolytopePair, TheFirstSupportPointDecidesOnlyWithPlanes) {
+  const auto a = mink::Polytope::make(cube_corners(1));
+  const auto b = mink::Polytope::make(cube_corners(0.2));
+  ASSERT_TRUE(a && b);
+  const Pose pa = Pose::identity();
+  const Pose pb = Pose::from(Vec3(1.1, 0.3, 0), mink::Quat::Identity());
+  const auto fresh = mink::intersect(*a, pa, *b, pb);
+  EXPECT_TRUE(fresh.intersect);
+  EXPECT_GT(fresh.iterations, 1);
+  ASSERT_TRUE(a->build_face_planes() && b->build_face_planes());
+  mink::GjkCache cache;
+  const auto with_planes = mink::intersect(*a, pa, *b, pb, {}, &cache);
+  EXPECT_TRUE(with_planes.intersect);
+  EXPECT_EQ(with_planes.iterations, 1);
+  ASSERT_EQ(cache.size, 1);
+  EXPECT_EQ(cache.directions[0], Vec3(1.1, 0.3, 0));
+  const auto warm = mink::intersect(*a, pa, *b, pb, {}, &cache);
+  EXPECT_TRUE(warm.intersect);
+  // Moved out beyond A's face: the first support plane separates them.
+  const Pose apart = Pose::from(Vec3(1.5, 0, 0), mink::Quat::Identity());
+  const auto separated = mink::intersect(*a, pa, *b, apart);
+  EXPECT_FALSE(separated.intersect);
+  EXPECT_EQ(separated.iterations, 1);
+}
+
+}  // namespace
