@@ -116,8 +116,22 @@ void feature_from_points(Vec3T<S>* points, int count, const Vec3T<S>& n, Support
     while (k >= lower && turn(hull[k - 2], hull[k - 1], p[i]) <= S(0)) --k;
     hull[k++] = p[i];
   }
-  const int n_hull = k - 1;  // the last point repeats the first
-  if (n_hull <= 1 || (hull[0].x == hull[1].x && hull[0].y == hull[1].y)) {
+  // The last point repeats the first. Corners apart by no more than the coordinates' rounding
+  // (1e-12 of their extent) are one: a sampled feature of a sum met one rim point twice, 5e-17
+  // apart, and the "edge" between them, pointing anywhere, moved a manifold point of the rounded
+  // sum across it, 2 % of the size inside the shape.
+  S extent = S(0);
+  for (int j = 0; j + 1 < k; ++j)
+    extent = std::max({extent, std::abs(hull[j].x), std::abs(hull[j].y)});
+  const S merge = S(1e-12) * extent;
+  auto apart = [merge](const Planar& a, const Planar& b) {
+    return std::max(std::abs(a.x - b.x), std::abs(a.y - b.y)) > merge;
+  };
+  int n_hull = 0;
+  for (int j = 0; j + 1 < k; ++j)
+    if (n_hull == 0 || apart(hull[j], hull[n_hull - 1])) hull[n_hull++] = hull[j];
+  while (n_hull > 1 && !apart(hull[n_hull - 1], hull[0])) --n_hull;
+  if (n_hull <= 1) {
     out.set_point(points[hull[0].i]);
     return;
   }

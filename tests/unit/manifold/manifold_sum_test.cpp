@@ -201,4 +201,78 @@ TEST(ManifoldSum, TheDeepestPointIsTheContacts) {
   }
 }
 
+/// Least of h(u) - u . x over unit u near-uniformly spread (a Fibonacci sphere of `count`): for a
+/// point x inside the shape, its distance to the surface (to the grid's resolution), 0 on it.
+double depth_below_surface(const std::vector<Part>& parts, const Vec3& x, int count) {
+  double least = 1e300;
+  for (int i = 0; i < count; ++i) {
+    const double z = 1 - (2 * i + 1.0) / count, rho = std::sqrt(1 - z * z);
+    const double phi = i * 2.399963229728653;  // the golden angle
+    const Vec3 u(rho * std::cos(phi), rho * std::sin(phi), z);
+    double h = 0;
+    for (const Part& part : parts) h += part.support(u);
+    least = std::min(least, h - u.dot(x));
+  }
+  return least;
+}
+
+TEST(ManifoldSum, FeaturePointsMetTwiceAreOnePoint) {
+  // Found by an adversarial probe (stop 51): the sampled feature of a sum of a cone and a capsule
+  // met one rim point twice, 5e-17 apart, and the zero-length "edge" between them, rounded by the
+  // capsule's radius across its arbitrary direction, gave a second manifold point 0.037 inside
+  // the sum (2 % of the size); with A and B swapped, one point. Now one point in both orders, on
+  // the sum's surface.
+  Part cone{Part::kCone, {}};
+  cone.radius = 0.27929207438715264;
+  cone.half_height = 0.12005018703143604;
+  Part segment_ball{Part::kSphere, {}};  // the capsule: a segment along z plus a ball
+  segment_ball.radius = 0.26176657686917576;
+  Part segment{Part::kPolytope, {Vec3(0, 0, -0.07115001927781), Vec3(0, 0, 0.07115001927781)}};
+  const std::vector<Part> parts = {cone, segment, segment_ball};
+  const Shape a =
+      Shape::sum(cone.shape(), Shape::capsule(segment_ball.radius, 0.07115001927781).value())
+          .value();
+  const Shape b =
+      Shape::box(Vec3(0.7833605824174813, 0.9749068926375872, 0.22447661981650574)).value();
+  const Pose pa = Pose::from(Vec3(0.23957369349692192, -1.2174944605303515, -0.9668749207368029),
+                             mink::Quat(-0.3631257519344581, -0.19591232632971742,
+                                        0.8795393691120739, -0.23699904399817287));
+  const Pose pb = Pose::from(Vec3(0.970931414440291, -1.1569108120042166, -0.9129253186246323),
+                             mink::Quat(0.6261940196733234, -0.11067732055555357,
+                                        0.7384199628133894, -0.22442713507657872));
+  const double size = a.bounding_radius() + b.bounding_radius();
+  int counts[2];
+  for (const bool swap : {false, true}) {
+    SCOPED_TRACE(swap ? "B, A" : "A, B");
+    const auto m = swap ? mink::manifold(b, pb, a, pa) : mink::manifold(a, pa, b, pb);
+    ASSERT_EQ(m.status, mink::Status::Intersecting);
+    counts[swap] = m.count;
+    for (int i = 0; i < m.count; ++i) {
+      const Vec3& on_sum = swap ? m.points[i].point_b : m.points[i].point_a;
+      // On the surface to the grid's resolution (0.04 rad: about 2e-4 of this size).
+      EXPECT_LT(depth_below_surface(parts, pa.inverse_apply(on_sum), 20000), 1e-3 * size)
+          << "point " << i;
+    }
+  }
+  EXPECT_EQ(counts[0], counts[1]);
+}
+
+TEST(ManifoldFeature, PointsApartByRoundingAreOne) {
+  const Vec3 n = Vec3::UnitZ();
+  // Two samples of one point, 5e-17 apart: a point, not an edge.
+  Vec3 twice[2] = {Vec3(-0.20698390214970763, -0.18751460494147934, -0.19120020630924606),
+                   Vec3(-0.20698390214970758, -0.18751460494147934, -0.19120020630924606)};
+  mink::SupportFeatureT<double> out;
+  mink::detail::feature_from_points(twice, 2, n, out);
+  EXPECT_EQ(out.count, 1);
+  // A triangle with one corner met twice, 1e-17 apart: three corners.
+  Vec3 triangle[4] = {Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(0, 1, 1), Vec3(1e-17, 1, 1)};
+  mink::detail::feature_from_points(triangle, 4, n, out);
+  EXPECT_EQ(out.count, 3);
+  // Corners 1e-9 apart on a unit feature are kept: a short edge is an edge.
+  Vec3 short_edge[2] = {Vec3(0.5, 0.5, 1), Vec3(0.5 + 1e-9, 0.5, 1)};
+  mink::detail::feature_from_points(short_edge, 2, n, out);
+  EXPECT_EQ(out.count, 2);
+}
+
 }  // namespace
