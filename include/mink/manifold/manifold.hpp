@@ -134,15 +134,17 @@ void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
 }
 
 /// Adds the contact's own pair to `clipped` (count > 0) when it is deeper than every clipped point
-/// by more than 1e-9 of the size: the features clipped need not hold the deepest point (a rounded
-/// cylinder deep in a sum of a polytope and a segment gave one point 0.1 shallower than the
-/// depth, 3 % of the size; with A and B swapped, the full depth), and the manifold's deepest
-/// point must be the contact's. The points' planar coordinates are then taken again, all in one
-/// basis across the normal (the clipping's may be a face's own, an affine image of it), for the
-/// reduction to keep. A full set gives up its shallowest point.
+/// by more than `margin` (the touching tolerance): the features clipped need not hold the deepest
+/// point (a rounded cylinder deep in a sum of a polytope and a segment gave one point 0.1
+/// shallower than the depth, 3 % of the size; with A and B swapped, the full depth; a cylinder's
+/// 16-point rim polygon, tilted 1e-6 rad, fell 3.9e-9 short), and the manifold's deepest point
+/// must be the contact's. The pair goes first, as the reduction takes the first of the points
+/// within its tolerance of the deepest (a full set gives up its shallowest point). The points'
+/// planar coordinates are then taken again, all in one basis across the normal (the clipping's
+/// may be a face's own, an affine image of it), for the reduction to keep.
 template <class S>
-void add_deepest_pair(const ContactResultT<S>& c, const PoseT<S>& pose_a, const Vec3T<S>& n, S size,
-                      ClippedPoints<S>& clipped) {
+void add_deepest_pair(const ContactResultT<S>& c, const PoseT<S>& pose_a, const Vec3T<S>& n,
+                      S margin, ClippedPoints<S>& clipped) {
   const S depth = c.intersect ? c.depth : -c.distance;
   int shallowest = 0;
   S deepest = -std::numeric_limits<S>::infinity();
@@ -150,11 +152,17 @@ void add_deepest_pair(const ContactResultT<S>& c, const PoseT<S>& pose_a, const 
     deepest = std::max(deepest, clipped.planar[i].depth);
     if (clipped.planar[i].depth < clipped.planar[shallowest].depth) shallowest = i;
   }
-  if (!(depth > deepest + S(1e-9) * size)) return;
-  const int slot = clipped.count < kMaxClipPoints ? clipped.count++ : shallowest;
-  clipped.on_a[slot] = pose_a.inverse_apply(c.point_a);
-  clipped.on_b[slot] = pose_a.inverse_apply(c.point_b);
-  clipped.planar[slot].depth = depth;
+  if (!(depth > deepest + margin)) return;
+  // Entries before the free slot (the end, or the shallowest point's) move up by one.
+  const int free_slot = clipped.count < kMaxClipPoints ? clipped.count++ : shallowest;
+  for (int i = free_slot; i > 0; --i) {
+    clipped.on_a[i] = clipped.on_a[i - 1];
+    clipped.on_b[i] = clipped.on_b[i - 1];
+    clipped.planar[i] = clipped.planar[i - 1];
+  }
+  clipped.on_a[0] = pose_a.inverse_apply(c.point_a);
+  clipped.on_b[0] = pose_a.inverse_apply(c.point_b);
+  clipped.planar[0].depth = depth;
   Vec3T<S> u, v;
   plane_basis(n, u, v);
   for (int i = 0; i < clipped.count; ++i)
@@ -187,7 +195,8 @@ void manifold_from_contact(const A& a, const PoseT<typename A::Scalar>& pose_a, 
   ClippedPoints<S> clipped;
   clip_features(a, b, pose_a.relative(pose_b), n, options.feature_tolerance, min_depth, size,
                 S(kSideSlack) * size, clipped);
-  if (clipped.count > 0) add_deepest_pair(c, pose_a, n, size, clipped);
+  if (clipped.count > 0)
+    add_deepest_pair(c, pose_a, n, options.tolerances.relative * size, clipped);
   if (clipped.count > 0) {
     keep_four(clipped, pose_a, size, result);
   } else {

@@ -257,6 +257,46 @@ TEST(ManifoldSum, FeaturePointsMetTwiceAreOnePoint) {
   EXPECT_EQ(counts[0], counts[1]);
 }
 
+TEST(ManifoldSum, ATiltedRimGivesWayToTheContactsDeepestPoint) {
+  // Found by an adversarial probe (stop 51): a cylinder standing on a box, tilted 1.3e-6 rad. Its
+  // cap is a polygon of 16 rim points, whose deepest lies between two of them, 3.9e-9 short of the
+  // contact's depth; the reduction then took another point within 1e-9 of the size of that one
+  // first: 7.8e-9 (2e-9 of the size) short. The contact's pair now joins whenever it is deeper by
+  // more than the touching tolerance, and goes first. Tilts from 1e-9 to 1e-4 rad (the cap is a
+  // face to the feature tolerance), turned about the axis at random, both argument orders.
+  const mink::Box box{Vec3(2.8724961845230395, 2.1954972695984405, 0.20781325037962217)};
+  const mink::Cylinder cylinder{0.22332737961564125, 0.28291263095932806};
+  Rng rng(5105);
+  const double size = box.bounding_radius() + cylinder.bounding_radius();
+  double worst = 0;
+  for (int i = 0; i < 200; ++i) {
+    const double tilt = std::pow(10.0, rng.uniform(-9, -4));
+    const Vec3 axis = Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), 0).normalized();
+    const mink::Quat turn(Eigen::AngleAxisd(rng.uniform(0, 6.3), Vec3::UnitZ()));
+    const mink::Quat lean(Eigen::AngleAxisd(tilt, axis));
+    const double sunk = 2e-5;  // the cap's centre below the box's top face
+    const Pose pa = Pose::identity();
+    const Pose pb = Pose::from(Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1),
+                                    box.half_extents.z() + cylinder.half_height - sunk),
+                               lean * turn);
+    for (const bool swap : {false, true}) {
+      const auto c =
+          swap ? mink::contact(cylinder, pb, box, pa) : mink::contact(box, pa, cylinder, pb);
+      const auto m =
+          swap ? mink::manifold(cylinder, pb, box, pa) : mink::manifold(box, pa, cylinder, pb);
+      ASSERT_EQ(c.status, mink::Status::Intersecting);
+      ASSERT_GE(m.count, 3);
+      // The deepest point agrees with the contact's depth; the first is within the reduction's
+      // tie tolerance (1e-9 of the size) of the deepest.
+      double deepest = m.points[0].depth;
+      for (int k = 1; k < m.count; ++k) deepest = std::max(deepest, m.points[k].depth);
+      worst = std::max(worst, std::abs(deepest - c.depth) / size);
+      EXPECT_GE(m.points[0].depth, deepest - 1e-9 * size);
+    }
+  }
+  EXPECT_LE(worst, 1e-9);
+}
+
 TEST(ManifoldFeature, PointsApartByRoundingAreOne) {
   const Vec3 n = Vec3::UnitZ();
   // Two samples of one point, 5e-17 apart: a point, not an edge.
