@@ -37,15 +37,22 @@ constexpr bool has_face_planes() {
 template <class A, class B>
 inline constexpr bool kPolytopePair = has_face_planes<A>() && has_face_planes<B>();
 
-/// Whether `p` (in the polytope's frame) is below every face plane of `planes`: a point of the
-/// polytope. The scan stops at the first block of planes that p is above.
+/// Whether `p` (in the polytope's frame) is below every face plane of `planes` by at least
+/// `margin`: a point of the polytope. The scan stops at the first block of planes that p is
+/// above by more than -margin.
 template <class S>
 [[gnu::always_inline]] inline bool below_face_planes(const FacePlanesT<S>& planes,
-                                                     const Vec3T<S>& p) {
+                                                     const Vec3T<S>& p, S margin) {
   const std::optional<S> largest =
-      SolidCore<PolytopeT<S>>::plane_distances(planes, p, nullptr, S(0));
-  return largest && *largest <= S(0);
+      SolidCore<PolytopeT<S>>::plane_distances(planes, p, nullptr, -margin);
+  return largest && *largest <= -margin;
 }
+
+/// A's point is taken to B's frame by the transpose of B's rotation, which is its inverse only to
+/// the rotation's own error: pose_error() allows 1e-6, and the point moves by up to about twice
+/// that times its offset. It must be inside B by more than that. (B's point goes to A's frame by
+/// the rotation itself, as GJK maps B's support points, and needs no margin.)
+inline constexpr double kTransposeSlack = 4e-6;
 
 /// GJK's first support point of `diff` (along diff.translation, or +x when the centres coincide,
 /// as enclose_origin() takes it) into `first`, and what it shows: Separated when its support plane
@@ -68,11 +75,13 @@ EncloseVerdict first_support_verdict(const CoreDifference<A, B>& diff, typename 
     return exceeds_times_length(-wd, inside, d, S(d.squaredNorm())) ? EncloseVerdict::Separated
                                                                     : EncloseVerdict::Unsure;
   if (const FacePlanesT<S>* planes_a = SolidCore<A>::core(diff.a))
-    if (below_face_planes(*planes_a, on_b)) return EncloseVerdict::Intersecting;
-  if (const FacePlanesT<S>* planes_b = SolidCore<B>::core(diff.b))
-    if (below_face_planes(*planes_b,
-                          Vec3T<S>(diff.rotation.transpose() * (on_a - diff.translation))))
+    if (below_face_planes(*planes_a, on_b, S(0))) return EncloseVerdict::Intersecting;
+  if (const FacePlanesT<S>* planes_b = SolidCore<B>::core(diff.b)) {
+    const Vec3T<S> offset = on_a - diff.translation;
+    if (below_face_planes(*planes_b, Vec3T<S>(diff.rotation.transpose() * offset),
+                          S(kTransposeSlack) * offset.cwiseAbs().maxCoeff()))
       return EncloseVerdict::Intersecting;
+  }
   return EncloseVerdict::Unsure;
 }
 

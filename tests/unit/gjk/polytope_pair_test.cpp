@@ -142,4 +142,24 @@ TEST(PolytopePair, TheFirstSupportPointDecidesOnlyWithPlanes) {
   EXPECT_EQ(separated.iterations, 1);
 }
 
+// A rotation orthonormal only to the 1e-6 that pose_error() allows (a scaling by 1 - 2.5e-7):
+// A's corner taken to B's frame by the transpose lands 2.5e-8 inside B, while B as GJK sees it
+// (its points mapped by the rotation itself) is 7.5e-8 beyond A's face. No common point may be
+// claimed from the transpose within its error.
+TEST(PolytopePair, ARotationOffByItsToleranceClaimsNoCommonPoint) {
+  const auto a = mink::Polytope::make(cube_corners(1));
+  const auto b = mink::Polytope::make(cube_corners(0.2));
+  ASSERT_TRUE(a && b && a->build_face_planes() && b->build_face_planes());
+  const double s = 1 - 2.5e-7;
+  Pose pb;
+  pb.rotation = s * mink::Mat3::Identity();
+  pb.translation = Vec3(1.2 + 2.5e-8, 0.9, 0.9);
+  ASSERT_EQ(mink::pose_error(pb), nullptr);
+  const auto got = mink::intersect(*a, Pose::identity(), *b, pb);
+  EXPECT_EQ(got.status, mink::Status::Separated);
+  EXPECT_FALSE(got.intersect);
+  const auto d = mink::distance(*a, Pose::identity(), *b, pb);
+  EXPECT_NEAR(d.distance, 7.5e-8, 1e-12);
+}
+
 }  // namespace
