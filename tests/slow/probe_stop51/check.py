@@ -6,6 +6,7 @@ expect_count (resting contact)."""
 import json, os, sys, time, numpy as np
 from multiprocessing import Pool
 from oracle import bounding_radius, minimize, pair_fn, member_fn, support_local, pose_of, quat_to_R
+from shapes import qmul
 
 TOOL = os.environ.get("MINK", "../../../build/release/tools/mink/mink")
 EPS = 2.2e-16
@@ -18,13 +19,6 @@ def motion_of(cid, cat=""):
     q = r.normal(size=4); q /= np.linalg.norm(q)
     t = r.normal(size=3) * 3
     return [float(v) for v in q], [float(v) for v in t]
-
-def qmul(a, b):
-    w1, x1, y1, z1 = a; w2, x2, y2, z2 = b
-    q = np.array([w1*w2 - x1*x2 - y1*y2 - z1*z2, w1*x2 + x1*w2 + y1*z2 - z1*y2,
-                  w1*y2 - x1*z2 + y1*w2 + z1*x2, w1*z2 + x1*y2 - y1*x2 + z1*w2])
-    q /= np.linalg.norm(q)
-    return [float(v) for v in q]
 
 def move_pose(p, q, t):
     R = quat_to_R(q)
