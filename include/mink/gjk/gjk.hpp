@@ -135,6 +135,14 @@ template <class S>
   return {det, std::abs(det) > S(8) * kEps * permanent && permanent >= kSmallest};
 }
 
+/// The first phase's first search direction (enclose_origin()): towards the origin from A - B's
+/// centre, B's origin seen from A, or +x when the origins coincide.
+template <ConvexShape A, ConvexShape B>
+Vec3T<typename A::Scalar> first_direction(const CoreDifference<A, B>& diff) {
+  using S = typename A::Scalar;
+  return diff.translation.squaredNorm() > S(0) ? Vec3T<S>(diff.translation) : Vec3T<S>::UnitX();
+}
+
 /// A point of the first phase's simplex (enclose_origin()): the point w of A - B and the direction
 /// that found it, and with `kWitnesses` the support points on A and B that made it.
 template <class S>
@@ -188,8 +196,7 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
   // step below decides what to keep. Points are moved whole (no index lists): this loop is the
   // whole boolean test on small hulls, and its bookkeeping once cost as much as the supports.
   P p[3];
-  V d = diff.translation;  // towards the origin from A - B's centre, B's origin seen from A
-  if (!(d.squaredNorm() > S(0))) d = V::UnitX();
+  V d = first_direction(diff);
   count = 0;
 
   while (iterations < max_supports) {

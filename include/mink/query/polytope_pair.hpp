@@ -54,8 +54,8 @@ template <class S>
 /// the rotation itself, as GJK maps B's support points, and needs no margin.)
 inline constexpr double kTransposeSlack = 4e-6;
 
-/// GJK's first support point of `diff` (along diff.translation, or +x when the centres coincide,
-/// as enclose_origin() takes it) into `first`, and what it shows: Separated when its support plane
+/// GJK's first support point of `diff` (along first_direction(), as enclose_origin() takes it)
+/// into `first`, and what it shows: Separated when its support plane
 /// passes the origin with room for `inside` (as enclose_origin() would decide on it), Intersecting
 /// when either of its two parts lies inside the other polytope, else Unsure (GJK goes on from
 /// `first`). A pair without face planes yet is never Intersecting here.
@@ -63,8 +63,7 @@ template <ConvexShape A, ConvexShape B>
 EncloseVerdict first_support_verdict(const CoreDifference<A, B>& diff, typename A::Scalar inside,
                                      PointAndDirection<typename A::Scalar>& first) {
   using S = typename A::Scalar;
-  Vec3T<S> d = diff.translation;
-  if (!(d.squaredNorm() > S(0))) d = Vec3T<S>::UnitX();
+  const Vec3T<S> d = first_direction(diff);
   const Vec3T<S> on_a = diff.a.support_core(d);
   const Vec3T<S> on_b =
       diff.rotation * diff.b.support_core(diff.direction_in_b(d)) + diff.translation;
