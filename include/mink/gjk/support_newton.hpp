@@ -25,6 +25,7 @@
 #include <limits>
 
 #include "mink/gjk/gjk.hpp"
+#include "mink/gjk/signed_volumes.hpp"
 #include "mink/gjk/support_descent.hpp"
 #include "mink/math/orthogonal.hpp"
 #include "mink/shapes/cone.hpp"
@@ -61,13 +62,83 @@ struct CurvedCore<Shape> : std::true_type {};
 template <class A, class B>
 inline constexpr bool kCurvedPair = CurvedCore<A>::value || CurvedCore<B>::value;
 
+/// Which cores' support points jump between `plus` and `minus`, taken on either side of a kink
+/// of h: by more than `smooth`, what a smooth core's point moves by between the two directions.
+template <class S>
+struct KinkSides {
+  bool a_jumps, b_jumps;
+  KinkSides(const SimplexVertexT<S>& plus, const SimplexVertexT<S>& minus, S smooth)
+      : a_jumps((plus.a - minus.a).norm() > smooth), b_jumps((plus.b - minus.b).norm() > smooth) {}
+  bool one() const { return a_jumps != b_jumps; }
+};
+
+/// The edge of A - B that `plus` and `minus` straddle, oriented from minus to plus. When only
+/// one core's point jumps, that core's own jump: A - B's also holds the other core's smooth
+/// motion, which tilts the edge by that motion over the edge's length (6e-8 rad for an edge of
+/// 2e-7 beside a core of 1e-6 turned by 1e-7 rad), and puts the circle of directions orthogonal
+/// to it that far off.
+template <class S>
+Vec3T<S> kink_edge(const SimplexVertexT<S>& plus, const SimplexVertexT<S>& minus, S smooth) {
+  const KinkSides<S> sides(plus, minus, smooth);
+  // B's point is taken along the opposite direction: its jump runs against A - B's.
+  if (sides.one()) return sides.a_jumps ? Vec3T<S>(plus.a - minus.a) : Vec3T<S>(minus.b - plus.b);
+  return plus.w - minus.w;
+}
+
+/// The rounding of support values u . w at support point `w`: of its cores' points, from whose
+/// difference w was rounded, not of w itself, which is small where the cores nearly touch or
+/// overlap slightly: a Newton step whose value came out 2.8e-17 higher, within the 1e-16
+/// rounding of its cores' points, was refused against w's own 3e-17, and the normal, its
+/// witness pair refused in turn, left 6e-5 rad off.
+template <class S>
+S support_rounding(const SimplexVertexT<S>& w) {
+  return S(16) * std::numeric_limits<S>::epsilon() *
+         std::max(
+             {w.a.cwiseAbs().maxCoeff(), w.b.cwiseAbs().maxCoeff(), w.w.cwiseAbs().maxCoeff()});
+}
+
+/// The weight t in [0, 1] of the point from + t (to - from) nearest `target` (from != to).
+template <class S>
+S nearest_weight(const Vec3T<S>& from, const Vec3T<S>& to, const Vec3T<S>& target) {
+  const Vec3T<S> edge = to - from;
+  return std::clamp((target - from).dot(edge) / edge.squaredNorm(), S(0), S(1));
+}
+
+/// The witness pair on the kink between `plus` and `minus`, taken on either side of it close
+/// by: on the jumping core, the point of its edge where A - B's point has no part along the
+/// edge (not either end); on a smooth core, the mean of its two points, its support point on
+/// the kink to second order. Interpolating the smooth core's points with the edge's weight
+/// instead moved them across the normal by that weight's distance from 1/2 times their
+/// straddle (2.5e-10 for an ellipsoid's points 1.3e-9 apart, beyond the witness tolerance).
+template <class S>
+SimplexVertexT<S> kink_witness(const SimplexVertexT<S>& plus, const SimplexVertexT<S>& minus,
+                               S smooth) {
+  const KinkSides<S> sides(plus, minus, smooth);
+  SimplexVertexT<S> out = minus;
+  if (sides.one() && sides.a_jumps) {
+    out.b = S(0.5) * (plus.b + minus.b);
+    out.a = minus.a + nearest_weight(minus.a, plus.a, out.b) * (plus.a - minus.a);
+  } else if (sides.one()) {
+    out.a = S(0.5) * (plus.a + minus.a);
+    out.b = minus.b + nearest_weight(minus.b, plus.b, out.a) * (plus.b - minus.b);
+  } else {
+    // Both jump: the point of A - B's edge nearest the origin, and each core's at its weight.
+    const S t = nearest_weight(minus.w, plus.w, Vec3T<S>::Zero().eval());
+    out.a = minus.a + t * (plus.a - minus.a);
+    out.b = minus.b + t * (plus.b - minus.b);
+  }
+  out.w = out.a - out.b;
+  return out;
+}
+
 /// A minimum on a kink of h: where one core's support point jumps across an edge of A - B (a
 /// capsule or cylinder lying on its side: the support jumps from one end of its axis to the
 /// other), the minimum lies on the circle of directions orthogonal to that edge, and h is smooth
-/// along it. `edge`: the jump's direction, first estimate. The edge is measured again at each
-/// point by two support calls straddling the circle by 1e-9 rad, the point is moved onto the
-/// circle, and secant steps on the slope of h along the circle find its zero. `best` only
-/// improves; returns whether it did.
+/// along it. `edge`: the jump's direction, first estimate (kink_edge()); the start is first
+/// moved onto its circle, as the kink may lie further from it than the straddle below. The edge
+/// is measured again at each point by two support calls straddling the circle by 1e-9 rad, the
+/// point is moved onto the circle, and secant steps on the slope of h along the circle find its
+/// zero; 3 support calls a step. `best` only improves; returns whether it did.
 template <ConvexShape A, ConvexShape B>
 bool secant_on_kink(const CoreDifference<A, B>& diff, Vec3T<typename A::Scalar> edge,
                     typename A::Scalar size, int& iterations,
@@ -76,7 +147,9 @@ bool secant_on_kink(const CoreDifference<A, B>& diff, Vec3T<typename A::Scalar> 
   using V = Vec3T<S>;
   constexpr S kEps = std::numeric_limits<S>::epsilon();
   const S straddle = std::max(S(1e-9), S(64) * kEps);
-  V u = best.normal;
+  edge = unit_of(edge);
+  V u = unit_of(V(best.normal - best.normal.dot(edge) * edge));
+  if (!is_finite(u)) return false;
   bool have_previous = false, improved = false;
   S previous_slope = S(0);
   V previous_u = u;
@@ -88,22 +161,26 @@ bool secant_on_kink(const CoreDifference<A, B>& diff, Vec3T<typename A::Scalar> 
     const V jump = plus.w - minus.w;
     // No jump left across the circle (its length against what a smooth h moves by): no kink.
     if (!(jump.norm() > S(64) * straddle * size)) break;
-    edge = unit_of(jump);
+    edge = unit_of(kink_edge(plus, minus, S(4) * straddle * size));
     u = unit_of(V(u - u.dot(edge) * edge));
     const V along = unit_of(V(edge.cross(u)));
     // On the circle both sides give the same value and slope (along is orthogonal to the jump).
     const V mean = S(0.5) * (plus.w + minus.w);
-    const S h = u.dot(mean), slope = along.dot(mean);
-    const S rounding = S(16) * kEps * mean.cwiseAbs().maxCoeff();
+    const S slope = along.dot(mean);
+    const S rounding = support_rounding(plus);
+    // The value is measured at u itself: on a kink it is the sides' common one, but where the
+    // jump crossed a face of A - B rather than an edge (a curved core against a polytope's face)
+    // u . mean is a point inside the face, below h(u) by the tilt of u off the face's normal
+    // times the face's width (9e-12 of a depth taken as the contact's), and no kink is here.
+    SimplexVertexT<S> at;
+    diff.support(u, at);
+    ++iterations;
+    const S h = u.dot(at.w);
+    if (!(h <= u.dot(mean) + rounding)) break;
     if (std::isfinite(h) && h <= best.value + rounding) {
-      // The witness pair is on the edge between the two sides' support points, where A - B's
-      // point lies along u (its part along the edge is 0): not either end.
-      const S along_edge = std::clamp(-jump.dot(minus.w) / jump.squaredNorm(), S(0), S(1));
       best.value = h;
       best.normal = u;
-      best.vertex.a = minus.a + along_edge * (plus.a - minus.a);
-      best.vertex.b = minus.b + along_edge * (plus.b - minus.b);
-      best.vertex.w = best.vertex.a - best.vertex.b;
+      best.vertex = kink_witness(plus, minus, S(4) * straddle * size);
       best.vertex.dir = u;
       improved = true;
     }
@@ -141,7 +218,7 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
     const V t1 = unit_of(V(orthogonal(u).cross(u)));
     const V t2 = u.cross(t1);
     const S g1 = t1.dot(s), g2 = t2.dot(s);
-    const S rounding = S(16) * kEps * s.cwiseAbs().maxCoeff();
+    const S rounding = support_rounding(best.vertex);
     const S gradient = std::hypot(g1, g2);
     if (!(gradient > rounding)) break;
     SimplexVertexT<S> w1, w2;
@@ -152,8 +229,8 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
     const V jump1 = w1.w - s, jump2 = w2.w - s;
     const S smooth = S(4) * delta * size;
     if (jump1.norm() > smooth || jump2.norm() > smooth) {
-      if (secant_on_kink(diff, jump1.norm() >= jump2.norm() ? jump1 : jump2, size, iterations,
-                         best))
+      const SimplexVertexT<S>& across = jump1.norm() >= jump2.norm() ? w1 : w2;
+      if (secant_on_kink(diff, kink_edge(across, best.vertex, smooth), size, iterations, best))
         ++kept;
       break;
     }
@@ -174,7 +251,9 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
         diff.support(unit_of(V(u + reach * downhill)), w);
         ++iterations;
         if ((w.w - s).norm() > S(4) * reach * size) {
-          if (secant_on_kink(diff, V(w.w - s), size, iterations, best)) ++kept;
+          if (secant_on_kink(diff, kink_edge(w, best.vertex, S(4) * reach * size), size, iterations,
+                             best))
+            ++kept;
           break;
         }
       }
@@ -186,7 +265,17 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
     ++iterations;
     const S h = n.dot(w.w);
     const S gradient_after = (w.w - h * n).norm();
-    if (!std::isfinite(h) || !(h <= best.value + rounding) || !(gradient_after < gradient)) break;
+    const S turn = std::hypot(x1, x2);
+    if (!std::isfinite(h) || !(h <= best.value + rounding) || !(gradient_after < gradient)) {
+      // The step crossed a kink (the support point jumped further than the turn moves a smooth
+      // one): the Hessian was one side's, whose minimum lies beyond the kink, and the minimum is
+      // on the kink itself (a curved core against a polyhedral one's edge).
+      if (std::isfinite(h) && (w.w - s).norm() > S(4) * turn * size &&
+          secant_on_kink(diff, kink_edge(w, best.vertex, S(4) * turn * size), size, iterations,
+                         best))
+        ++kept;
+      break;
+    }
     best.value = h;
     best.normal = n;
     best.vertex = w;
@@ -195,23 +284,101 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
   return kept;
 }
 
+/// Whether `target` lies in the convex hull of `points` (count of them, all on one plane with
+/// the target: a face or an edge), to `tolerance`: every point of a plane's hull lies in a
+/// triangle of three of its points (Caratheodory), and a repeated point makes the triangle a
+/// segment, which the closest-point routine takes as such.
+template <class S>
+bool in_planar_hull(const Vec3T<S>* points, int count, const Vec3T<S>& target, S tolerance) {
+  for (int i = 0; i < count; ++i)
+    for (int j = i + 1; j < count; ++j)
+      for (int k = j + 1; k < count; ++k) {
+        const Vec3T<S> w[3] = {points[i] - target, points[j] - target, points[k] - target};
+        if (closest_of_simplex(w, 3).dist_sq <= tolerance * tolerance) return true;
+      }
+  return false;
+}
+
+/// The witness pair along `best.normal` from the support points there, when one core has a
+/// single point on its support plane (smooth or strictly convex there, or a corner) and the
+/// other does not (a face or an edge, whose support point is one of its corners, not the point
+/// of contact). The single point is the one core's witness; the other's is placed from it by
+/// the value along the normal, onto that core's support plane, and kept only where it lies in
+/// the hull of that core's support points seen here, a proof that it is a point of that core
+/// (a face's corners not seen leave the pair as it was). A core has a single point when its
+/// support point moves by at most what a smooth one does (4 delta size) as the direction turns
+/// by delta six ways, 60 degrees apart; a face's or an edge's jumps to other corners. GJK's and
+/// EPA's points are combinations of support points from several directions: beside a face, the
+/// curved core's are a chord below its surface, and the face's point lies off the contact by
+/// the chord's tilt (2e-7 of the size, with the normal exact to 1e-13). 7 support calls
+/// (counted in `iterations`); returns whether `best.vertex` changed.
+template <ConvexShape A, ConvexShape B>
+bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
+                         SupportMinimum<typename A::Scalar>& best) {
+  using S = typename A::Scalar;
+  using V = Vec3T<S>;
+  constexpr int kProbes = 6;
+  const S delta = std::max(S(1e-7), std::sqrt(std::numeric_limits<S>::epsilon()));
+  const V u = best.normal;
+  SimplexVertexT<S> seen[kProbes + 1];
+  diff.support(u, seen[0]);
+  const V t1 = unit_of(V(orthogonal(u).cross(u)));
+  const V t2 = u.cross(t1);
+  const S smooth = S(4) * delta * size;
+  bool a_single = true, b_single = true;
+  for (int k = 1; k <= kProbes; ++k) {
+    const S turn = S(1.0471975511965976) * S(k);  // 60 degrees
+    diff.support(unit_of(V(u + delta * (std::cos(turn) * t1 + std::sin(turn) * t2))), seen[k]);
+    a_single = a_single && (seen[k].a - seen[0].a).norm() <= smooth;
+    b_single = b_single && (seen[k].b - seen[0].b).norm() <= smooth;
+  }
+  iterations += kProbes + 1;
+  if (a_single == b_single) return false;
+  const S value = u.dot(seen[0].w);
+  if (!std::isfinite(value) || !is_finite(seen[0].w)) return false;
+  SimplexVertexT<S> pair = seen[0];
+  V others[kProbes + 1];
+  if (a_single) {
+    pair.b = pair.a - value * u;
+    for (int k = 0; k <= kProbes; ++k) others[k] = seen[k].b;
+  } else {
+    pair.a = pair.b + value * u;
+    for (int k = 0; k <= kProbes; ++k) others[k] = seen[k].a;
+  }
+  // Heights along u dropped: the support points lie on the face's plane, the placed point on
+  // the plane orthogonal to u, which the rounding of u tilts (by 1e-13 rad: 1e-13 across a unit
+  // face, beyond the rounding of the points).
+  const V& placed = a_single ? pair.b : pair.a;
+  for (V& p : others) p -= u.dot(V(p - placed)) * u;
+  if (!in_planar_hull(others, kProbes + 1, placed, S(4) * support_rounding(seen[0]))) return false;
+  pair.w = pair.a - pair.b;
+  pair.dir = u;
+  best.value = value;
+  best.vertex = pair;
+  return true;
+}
+
 /// Newton steps on h from `best` (its value must be h(best.normal), its vertex that support
 /// point), at most `max_steps`, each 3 support calls (counted in `iterations`); `size` bounds
 /// the radii of curvature of A - B (the sum of the bounding radii). A step across a kink (the
-/// support point jumps by more than a smooth h allows) hands over to secant_on_kink(). `best`
-/// only improves, and only to a vertex that is a witness pair: its points' offset
-/// vertex.w - value normal across the normal within `witness_gap` (unit: length). A flat face's
-/// support point is one corner of it, not the point of contact: such an answer is dropped and
-/// `best` left as it came. Returns the number of steps kept (0 when dropped).
+/// support point jumps by more than a smooth h allows) hands over to secant_on_kink(). The
+/// points then come from the normal where one core is smooth and the other not
+/// (smooth_side_witness(), 7 support calls). `best` only improves, and only to a vertex that is
+/// a witness pair: its points' offset vertex.w - value normal across the normal within
+/// `witness_gap` (unit: length). A flat face's support point is one corner of it, not the point
+/// of contact: an answer that keeps one is dropped and `best` left as it came (with its points
+/// from its normal, as above). Returns the number of steps kept, the points' placing counting
+/// one (0 when nothing changed).
 template <ConvexShape A, ConvexShape B>
 int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
                       typename A::Scalar witness_gap, int max_steps, int& iterations,
                       SupportMinimum<typename A::Scalar>& best) {
   const SupportMinimum<typename A::Scalar> start = best;
-  const int kept = newton_steps(diff, size, max_steps, iterations, best);
+  int kept = newton_steps(diff, size, max_steps, iterations, best);
+  if (smooth_side_witness(diff, size, iterations, best)) ++kept;
   if (kept > 0 && !((best.vertex.w - best.value * best.normal).norm() <= witness_gap)) {
     best = start;
-    return 0;
+    return smooth_side_witness(diff, size, iterations, best) ? 1 : 0;
   }
   return kept;
 }
