@@ -37,6 +37,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_exact_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_property_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_sum_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_repeats_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/reduce_to_four_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/io/mesh_test.cpp
 )

@@ -305,19 +305,20 @@ bool in_planar_hull(const Vec3T<S>* points, int count, const Vec3T<S>& target, S
 /// of contact). The single point is the one core's witness; the other's is placed from it by
 /// the value along the normal, onto that core's support plane, and kept only where it lies in
 /// the hull of that core's support points seen here, a proof that it is a point of that core
-/// (a face's corners not seen leave the pair as it was). A core has a single point when its
+/// (up to 3 more are looked for towards it; a face's corners still not seen leave the pair as
+/// it was). A core has a single point when its
 /// support point moves by at most what a smooth one does (4 delta size) as the direction turns
 /// by delta six ways, 60 degrees apart; a face's or an edge's jumps to other corners. GJK's and
 /// EPA's points are combinations of support points from several directions: beside a face, the
 /// curved core's are a chord below its surface, and the face's point lies off the contact by
-/// the chord's tilt (2e-7 of the size, with the normal exact to 1e-13). 7 support calls
+/// the chord's tilt (2e-7 of the size, with the normal exact to 1e-13). 7 to 10 support calls
 /// (counted in `iterations`); returns whether `best.vertex` changed.
 template <ConvexShape A, ConvexShape B>
 bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
                          SupportMinimum<typename A::Scalar>& best) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  constexpr int kProbes = 6;
+  constexpr int kProbes = 6, kReaches = 3;
   const S delta = std::max(S(1e-7), std::sqrt(std::numeric_limits<S>::epsilon()));
   const V u = best.normal;
   SimplexVertexT<S> seen[kProbes + 1];
@@ -337,20 +338,36 @@ bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar si
   const S value = u.dot(seen[0].w);
   if (!std::isfinite(value) || !is_finite(seen[0].w)) return false;
   SimplexVertexT<S> pair = seen[0];
-  V others[kProbes + 1];
-  if (a_single) {
+  if (a_single)
     pair.b = pair.a - value * u;
-    for (int k = 0; k <= kProbes; ++k) others[k] = seen[k].b;
-  } else {
+  else
     pair.a = pair.b + value * u;
-    for (int k = 0; k <= kProbes; ++k) others[k] = seen[k].a;
-  }
-  // Heights along u dropped: the support points lie on the face's plane, the placed point on
-  // the plane orthogonal to u, which the rounding of u tilts (by 1e-13 rad: 1e-13 across a unit
-  // face, beyond the rounding of the points).
   const V& placed = a_single ? pair.b : pair.a;
-  for (V& p : others) p -= u.dot(V(p - placed)) * u;
-  if (!in_planar_hull(others, kProbes + 1, placed, S(4) * support_rounding(seen[0]))) return false;
+  // The other core's support points, heights along u dropped: they lie on the face's plane, the
+  // placed point on the plane orthogonal to u, which the rounding of u tilts (by 1e-13 rad:
+  // 1e-13 across a unit face, beyond the rounding of the points).
+  V others[kProbes + 1 + kReaches];
+  int count = 0;
+  const auto add = [&](const SimplexVertexT<S>& w) {
+    const V p = a_single ? w.b : w.a;
+    others[count++] = p - u.dot(V(p - placed)) * u;
+  };
+  for (const SimplexVertexT<S>& w : seen) add(w);
+  const S tolerance = S(4) * support_rounding(seen[0]);
+  // Outside the points seen (a cap's contact beyond the hexagon of its six rim points): the
+  // face's extreme point towards the placed one from their centre is added, which puts a disc's
+  // rim point on the ray to it, and the hexagon's neighbours on either side then hold it.
+  for (int reach = 0; !in_planar_hull(others, count, placed, tolerance); ++reach) {
+    if (reach == kReaches) return false;
+    V centre = V::Zero();
+    for (int i = 0; i < count; ++i) centre += others[i];
+    const V toward = V(placed - centre / S(count)) - u.dot(V(placed - centre / S(count))) * u;
+    if (!(toward.squaredNorm() > S(0))) return false;
+    SimplexVertexT<S> w;
+    diff.support(unit_of(V(u + delta * unit_of(toward))), w);
+    ++iterations;
+    add(w);
+  }
   pair.w = pair.a - pair.b;
   pair.dir = u;
   best.value = value;
@@ -363,8 +380,8 @@ bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar si
 /// the radii of curvature of A - B (the sum of the bounding radii). A step across a kink (the
 /// support point jumps by more than a smooth h allows) hands over to secant_on_kink(). The
 /// points then come from the normal where one core is smooth and the other not
-/// (smooth_side_witness(), 7 support calls). `best` only improves, and only to a vertex that is
-/// a witness pair: its points' offset vertex.w - value normal across the normal within
+/// (smooth_side_witness(), 7 to 10 support calls). `best` only improves, and only to a vertex that
+/// is a witness pair: its points' offset vertex.w - value normal across the normal within
 /// `witness_gap` (unit: length). A flat face's support point is one corner of it, not the point
 /// of contact: an answer that keeps one is dropped and `best` left as it came (with its points
 /// from its normal, as above). Returns the number of steps kept, the points' placing counting

@@ -112,13 +112,17 @@ using ManifoldResult = ManifoldResultT<double>;
 
 namespace detail {
 
+/// Manifold points closer than this times the size are one point (reduce_to_four()).
+inline constexpr double kRepeatLength = 1e-9;
+
 /// Step 4 and the world frame: reduces `clipped` to at most four points of `result`, whose
 /// normal is set.
 template <class S>
 void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
                ManifoldResultT<S>& result) {
   int keep[4];
-  const int kept = detail::reduce_to_four(clipped.planar, clipped.count, S(1e-9) * size, keep);
+  const int kept =
+      detail::reduce_to_four(clipped.planar, clipped.count, S(kRepeatLength) * size, keep);
   result.count = kept;
   for (int i = 0; i < kept; ++i) {
     const S depth = clipped.planar[keep[i]].depth;
@@ -142,26 +146,39 @@ void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
 /// within its tolerance of the deepest (a full set gives up its shallowest point). The points'
 /// planar coordinates are then taken again, all in one basis across the normal (the clipping's
 /// may be a face's own, an affine image of it), for the reduction to keep.
+///
+/// A clipped point that is the pair's own corner, rounded the face's way, gives the pair its
+/// slot: a face of a rounded core moves by the radius r along its own normal, tilted by t from
+/// the contact's, so its corner lies r t from the corner's deepest point and r t^2 / 2 shallower
+/// (1.2e-5 apart for a rounded triangle tilted 8e-5 rad, which kept both, 4 points for 3). A
+/// point within sqrt(2 r (depth - its depth)) of the pair, plus `min_length` (the reduction's
+/// repeat distance; `radii` is r, both cores' radii), is that corner.
 template <class S>
-void add_deepest_pair(const ContactResultT<S>& c, const PoseT<S>& pose_a, const Vec3T<S>& n,
-                      S margin, ClippedPoints<S>& clipped) {
+void add_deepest_pair(const ContactResultT<S>& c, const Vec3T<S>& n, S margin, S radii,
+                      S min_length, ClippedPoints<S>& clipped) {
   const S depth = c.intersect ? c.depth : -c.distance;
-  int shallowest = 0;
+  int shallowest = 0, same_corner = -1;
   S deepest = -std::numeric_limits<S>::infinity();
   for (int i = 0; i < clipped.count; ++i) {
     deepest = std::max(deepest, clipped.planar[i].depth);
     if (clipped.planar[i].depth < clipped.planar[shallowest].depth) shallowest = i;
+    const S reach = std::sqrt(S(2) * radii * std::max(S(0), depth - clipped.planar[i].depth));
+    if (same_corner < 0 && (clipped.on_a[i] - c.point_a).norm() <= reach + min_length)
+      same_corner = i;
   }
   if (!(depth > deepest + margin)) return;
-  // Entries before the free slot (the end, or the shallowest point's) move up by one.
-  const int free_slot = clipped.count < kMaxClipPoints ? clipped.count++ : shallowest;
+  // Entries before the free slot (the corner's, the end, or the shallowest point's) move up by
+  // one.
+  const int free_slot = same_corner >= 0                 ? same_corner
+                        : clipped.count < kMaxClipPoints ? clipped.count++
+                                                         : shallowest;
   for (int i = free_slot; i > 0; --i) {
     clipped.on_a[i] = clipped.on_a[i - 1];
     clipped.on_b[i] = clipped.on_b[i - 1];
     clipped.planar[i] = clipped.planar[i - 1];
   }
-  clipped.on_a[0] = pose_a.inverse_apply(c.point_a);
-  clipped.on_b[0] = pose_a.inverse_apply(c.point_b);
+  clipped.on_a[0] = c.point_a;
+  clipped.on_b[0] = c.point_b;
   clipped.planar[0].depth = depth;
   Vec3T<S> u, v;
   plane_basis(n, u, v);
@@ -171,40 +188,46 @@ void add_deepest_pair(const ContactResultT<S>& c, const PoseT<S>& pose_a, const 
 }
 
 /// The manifold of shapes whose normal and depth come from contact(), into `result` (default
-/// constructed).
+/// constructed). contact() runs in A's frame (A at the identity, B at the relative pose), where
+/// the features are clipped: it computes in that frame anyway, and its points taken to the world
+/// and back lost the world's rounding (1e-8 at 8e7 from the origin, 6e-9 of a unit pair's size),
+/// which set the contact's pair apart from the same clipped point by more than the reduction's
+/// 1e-9 of the size, and kept both.
 template <ConvexShape A, ConvexShape B>
 void manifold_from_contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
                            const PoseT<typename A::Scalar>& pose_b,
                            const ManifoldOptionsT<typename A::Scalar>& options,
                            ManifoldResultT<typename A::Scalar>& result) {
   using S = typename A::Scalar;
-  const ContactResultT<S> c = contact(a, pose_a, b, pose_b, options.tolerances);
+  if ((result.error = query_input_error(a, pose_a, b, pose_b))) return;
+  const PoseT<S> relative = pose_a.relative(pose_b);
+  const ContactResultT<S> c = contact(a, PoseT<S>::identity(), b, relative, options.tolerances);
   result.status = c.status;
   result.error = c.error;
   result.intersect = c.intersect;
   result.distance = c.distance;
   result.depth = c.depth;
-  result.normal = c.normal;
+  result.normal = pose_a.rotate(c.normal);
   result.error_bound = c.error_bound;
   result.iterations = c.iterations;
   result.normal_chosen = c.normal_chosen;
   if (c.status == Status::InvalidInput || (!c.intersect && !(c.distance <= options.margin))) return;
   const S size = a.bounding_radius() + b.bounding_radius();
   const S min_depth = -std::max(options.margin, options.tolerances.relative * size);
-  const Vec3T<S> n = pose_a.inverse_rotate(c.normal);
   ClippedPoints<S> clipped;
-  clip_features(a, b, pose_a.relative(pose_b), n, options.feature_tolerance, min_depth, size,
+  clip_features(a, b, relative, c.normal, options.feature_tolerance, min_depth, size,
                 S(kSideSlack) * size, clipped);
   if (clipped.count > 0)
-    add_deepest_pair(c, pose_a, n, options.tolerances.relative * size, clipped);
+    add_deepest_pair(c, c.normal, options.tolerances.relative * size,
+                     a.core_radius() + b.core_radius(), S(kRepeatLength) * size, clipped);
   if (clipped.count > 0) {
     keep_four(clipped, pose_a, size, result);
   } else {
     // A vertex, crossing edges, or features that the clipping could not match: the contact's
     // deepest (or closest) points.
     result.count = 1;
-    result.points[0].point_a = c.point_a;
-    result.points[0].point_b = c.point_b;
+    result.points[0].point_a = pose_a.apply(c.point_a);
+    result.points[0].point_b = pose_a.apply(c.point_b);
     result.points[0].depth = c.intersect ? c.depth : -c.distance;
   }
 }
