@@ -306,13 +306,13 @@ bool in_planar_hull(const Vec3T<S>* points, int count, const Vec3T<S>& target, S
 /// the value along the normal, onto that core's support plane, and kept only where it lies in
 /// the hull of that core's support points seen here, a proof that it is a point of that core
 /// (up to 3 more are looked for towards it; a face's corners still not seen leave the pair as
-/// it was). A core has a single point when its
-/// support point moves by at most what a smooth one does (4 delta size) as the direction turns
-/// by delta six ways, 60 degrees apart; a face's or an edge's jumps to other corners. GJK's and
-/// EPA's points are combinations of support points from several directions: beside a face, the
-/// curved core's are a chord below its surface, and the face's point lies off the contact by
-/// the chord's tilt (2e-7 of the size, with the normal exact to 1e-13). 7 to 10 support calls
-/// (counted in `iterations`); returns whether `best.vertex` changed.
+/// it was). A core has a single point when its support point moves by at most what a smooth one
+/// does (4 delta size) as the direction turns by delta six ways, 60 degrees apart; a face's or
+/// an edge's jumps to other corners. GJK's and EPA's points are combinations of support points
+/// from several directions: beside a face, the curved core's are a chord below its surface, and
+/// the face's point lies off the contact by the chord's tilt (2e-7 of the size, with the normal
+/// exact to 1e-13). 7 to 10 support calls (counted in `iterations`); returns whether
+/// `best.vertex` changed.
 template <ConvexShape A, ConvexShape B>
 bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
                          SupportMinimum<typename A::Scalar>& best) {
@@ -380,8 +380,8 @@ bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar si
 /// the radii of curvature of A - B (the sum of the bounding radii). A step across a kink (the
 /// support point jumps by more than a smooth h allows) hands over to secant_on_kink(). The
 /// points then come from the normal where one core is smooth and the other not
-/// (smooth_side_witness(), 7 to 10 support calls). `best` only improves, and only to a vertex that
-/// is a witness pair: its points' offset vertex.w - value normal across the normal within
+/// (smooth_side_witness(), 7 to 10 support calls). `best` only improves, and only to a vertex
+/// that is a witness pair: its points' offset vertex.w - value normal across the normal within
 /// `witness_gap` (unit: length). A flat face's support point is one corner of it, not the point
 /// of contact: an answer that keeps one is dropped and `best` left as it came (with its points
 /// from its normal, as above). Returns the number of steps kept, the points' placing counting

@@ -137,7 +137,8 @@ void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
   }
 }
 
-/// Adds the contact's own pair to `clipped` (count > 0) when it is deeper than every clipped point
+/// Adds the contact's own pair (`c`, computed with A at the identity: its points and normal `n`
+/// are in A's frame) to `clipped` (count > 0) when it is deeper than every clipped point
 /// by more than `margin` (the touching tolerance): the features clipped need not hold the deepest
 /// point (a rounded cylinder deep in a sum of a polytope and a segment gave one point 0.1
 /// shallower than the depth, 3 % of the size; with A and B swapped, the full depth; a cylinder's
