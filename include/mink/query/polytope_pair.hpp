@@ -55,10 +55,10 @@ template <class S>
 inline constexpr double kTransposeSlack = 4e-6;
 
 /// GJK's first support point of `diff` (along first_direction(), as enclose_origin() takes it)
-/// into `first`, and what it shows: Separated when its support plane
-/// passes the origin with room for `inside` (as enclose_origin() would decide on it), Intersecting
-/// when either of its two parts lies inside the other polytope, else Unsure (GJK goes on from
-/// `first`). A pair without face planes yet is never Intersecting here.
+/// into `first`, and what it shows: Separated when its support plane passes the origin with room
+/// for `inside` (as enclose_origin() would decide on it), Intersecting when either of its two
+/// parts lies inside the other polytope, else Unsure (GJK goes on from `first`). A pair without
+/// face planes yet is never Intersecting here.
 template <ConvexShape A, ConvexShape B>
 EncloseVerdict first_support_verdict(const CoreDifference<A, B>& diff, typename A::Scalar inside,
                                      PointAndDirection<typename A::Scalar>& first) {
