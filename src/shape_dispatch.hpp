@@ -40,6 +40,13 @@ struct HullRef {
   const char* error() const { return hull->error(); }
 };
 
+/// The hull's own faces for manifolds (before, a hull shape's feature was sampled from its support
+/// mapping).
+inline void support_feature(const HullRef& h, const Vec3& d, double tolerance,
+                            SupportFeatureT<double>& out) {
+  mink::support_feature(*h.hull, d, tolerance, out);
+}
+
 template <class Fn>
 auto with_concrete(const Shape& shape, Fn&& fn) {
   return std::visit(

@@ -34,6 +34,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_curved_normal_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_epa_budget_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/clip_box_pair_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/feature_sum_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_exact_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_property_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/manifold_sum_test.cpp

@@ -358,9 +358,17 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // as distance() does, one held and the other placed by v, moved a point touching a needle
     // off its shape by the whole rounding.)
     // A tetrahedron (the cores enclose the origin) gives its face nearest the origin instead.
-    SimplexT<S> touching = gjk.simplex;
-    if (touching.size == 4) detail::reduce_to_nearest_face(touching);
-    touching.witness_points(on_a, on_b);
+    // Curved cores: from the normal where one core has a single point (detail::touching_witness()).
+    bool placed = false;
+    if constexpr (detail::kCurvedPair<A, B>)
+      placed =
+          tolerances.refine_curved_normals &&
+          detail::touching_witness(diff, n, size, S(16) * touch, result.iterations, on_a, on_b);
+    if (!placed) {
+      SimplexT<S> touching = gjk.simplex;
+      if (touching.size == 4) detail::reduce_to_nearest_face(touching);
+      touching.witness_points(on_a, on_b);
+    }
     const Vec3T<S> midpoint = S(0.5) * (on_a + on_b);
     on_a = on_b = midpoint;
   }

@@ -169,6 +169,10 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
         out.on_b = least.vertex.b;
         share_residual(out.on_a, out.on_b, out.normal, -gjk.upper);
       }
+    } else if (tolerances.refine_curved_normals && std::isfinite(gjk.upper)) {
+      // Touching or nearly: GJK's normal stays, the points come from it.
+      if (touching_witness(diff, out.normal, size, S(16) * touch, iterations, out.on_a, out.on_b))
+        share_residual(out.on_a, out.on_b, out.normal, -gjk.upper);
     }
   }
   const bool capped = gjk.status == Status::IterationLimit;

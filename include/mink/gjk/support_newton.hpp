@@ -25,8 +25,8 @@
 #include <limits>
 
 #include "mink/gjk/gjk.hpp"
-#include "mink/gjk/signed_volumes.hpp"
 #include "mink/gjk/support_descent.hpp"
+#include "mink/manifold/feature.hpp"
 #include "mink/math/orthogonal.hpp"
 #include "mink/shapes/cone.hpp"
 #include "mink/shapes/cylinder.hpp"
@@ -284,19 +284,56 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
   return kept;
 }
 
-/// Whether `target` lies in the convex hull of `points` (count of them, all on one plane with
-/// the target: a face or an edge), to `tolerance`: every point of a plane's hull lies in a
-/// triangle of three of its points (Caratheodory), and a repeated point makes the triangle a
-/// segment, which the closest-point routine takes as such.
-template <class S>
-bool in_planar_hull(const Vec3T<S>* points, int count, const Vec3T<S>& target, S tolerance) {
-  for (int i = 0; i < count; ++i)
-    for (int j = i + 1; j < count; ++j)
-      for (int k = j + 1; k < count; ++k) {
-        const Vec3T<S> w[3] = {points[i] - target, points[j] - target, points[k] - target};
-        if (closest_of_simplex(w, 3).dist_sq <= tolerance * tolerance) return true;
-      }
-  return false;
+/// How far below the support plane a point of the other core's feature may lie when the witness
+/// is placed in it (a fraction of the size): the bar of the answers' accuracy, so a placed point
+/// lies within it of the face's plane.
+inline constexpr double kFeatureWitnessTolerance = 1e-9;
+
+/// Whether `target` lies in the support feature of `core` along `dir` (A's frame; the core's
+/// frame is mapped to it by `rotation`, `translation`), seen along `dir`, to `tolerance`: inside
+/// its face (a cap's whole disc), on its edge or at its corner. The feature (manifold/feature.hpp)
+/// is every core's exact face, edge or corner, the sum of its parts' for a sum: its points are
+/// points of the core, so containment proves that `target`, on the support plane, is one too.
+/// `feature_tolerance` is how far below the support plane its points may lie (unit: length).
+template <ConvexShape T>
+bool in_support_feature(const T& core, const Mat3T<typename T::Scalar>& rotation,
+                        const Vec3T<typename T::Scalar>& translation,
+                        const Vec3T<typename T::Scalar>& dir,
+                        const Vec3T<typename T::Scalar>& target,
+                        typename T::Scalar feature_tolerance, typename T::Scalar tolerance) {
+  using S = typename T::Scalar;
+  using V = Vec3T<S>;
+  SupportFeatureT<S> f;
+  support_feature_of(core, V(rotation.transpose() * dir), feature_tolerance, f);
+  if (f.count < 1) return false;
+  const V u = unit_of(dir);
+  auto across = [&u](const V& x) { return V(x - u.dot(x) * u); };  // seen along u
+  V points[kMaxFeaturePoints];
+  for (int i = 0; i < f.count; ++i) points[i] = rotation * f.points[i] + translation;
+  if (f.count == 1) return across(V(target - points[0])).norm() <= tolerance;
+  if (f.count == 2) {
+    const V edge = across(V(points[1] - points[0])), to = across(V(target - points[0]));
+    if (!(edge.squaredNorm() > S(0))) return to.norm() <= tolerance;
+    const S t = std::clamp(to.dot(edge) / edge.squaredNorm(), S(0), S(1));
+    return (to - t * edge).norm() <= tolerance;
+  }
+  const V normal = rotation * f.normal;
+  if (f.disc_radius > S(0)) {
+    // A cap: the target moved along u onto the cap's plane lies within the rim.
+    const V centre = rotation * f.disc_centre + translation;
+    const S along = normal.dot(u);
+    if (!(std::abs(along) > S(0.5))) return false;
+    const V on_plane = target + (normal.dot(V(centre - target)) / along) * u;
+    return (on_plane - centre).norm() <= f.disc_radius + tolerance;
+  }
+  // The polygon runs counter-clockwise about its normal: the target is on the inner side of
+  // every edge, seen along u.
+  const S side = normal.dot(u) >= S(0) ? S(1) : S(-1);
+  for (int i = 0; i < f.count; ++i) {
+    const V edge = points[i + 1 == f.count ? 0 : i + 1] - points[i];
+    if (side * edge.cross(V(target - points[i])).dot(u) < -tolerance * edge.norm()) return false;
+  }
+  return true;
 }
 
 /// The witness pair along `best.normal` from the support points there, when one core has a
@@ -304,21 +341,20 @@ bool in_planar_hull(const Vec3T<S>* points, int count, const Vec3T<S>& target, S
 /// other does not (a face or an edge, whose support point is one of its corners, not the point
 /// of contact). The single point is the one core's witness; the other's is placed from it by
 /// the value along the normal, onto that core's support plane, and kept only where it lies in
-/// the hull of that core's support points seen here, a proof that it is a point of that core
-/// (up to 3 more are looked for towards it; a face's corners still not seen leave the pair as
-/// it was). A core has a single point when its support point moves by at most what a smooth one
+/// that core's support feature there (in_support_feature()), a proof that it is a point of that
+/// core. A core has a single point when its support point moves by at most what a smooth one
 /// does (4 delta size) as the direction turns by delta six ways, 60 degrees apart; a face's or
 /// an edge's jumps to other corners. GJK's and EPA's points are combinations of support points
 /// from several directions: beside a face, the curved core's are a chord below its surface, and
 /// the face's point lies off the contact by the chord's tilt (2e-7 of the size, with the normal
-/// exact to 1e-13). 7 to 10 support calls (counted in `iterations`); returns whether
+/// exact to 1e-13). 7 support calls (counted in `iterations`) and one feature; returns whether
 /// `best.vertex` changed.
 template <ConvexShape A, ConvexShape B>
 bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
                          SupportMinimum<typename A::Scalar>& best) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  constexpr int kProbes = 6, kReaches = 3;
+  constexpr int kProbes = 6;
   const S delta = std::max(S(1e-7), std::sqrt(std::numeric_limits<S>::epsilon()));
   const V u = best.normal;
   SimplexVertexT<S> seen[kProbes + 1];
@@ -343,35 +379,43 @@ bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar si
   else
     pair.a = pair.b + value * u;
   const V& placed = a_single ? pair.b : pair.a;
-  // The other core's support points, heights along u dropped: they lie on the face's plane, the
-  // placed point on the plane orthogonal to u, which the rounding of u tilts (by 1e-13 rad:
-  // 1e-13 across a unit face, beyond the rounding of the points).
-  V others[kProbes + 1 + kReaches];
-  int count = 0;
-  const auto add = [&](const SimplexVertexT<S>& w) {
-    const V p = a_single ? w.b : w.a;
-    others[count++] = p - u.dot(V(p - placed)) * u;
-  };
-  for (const SimplexVertexT<S>& w : seen) add(w);
+  // The other core's exact feature along the normal must hold the placed point (a face's
+  // corners that the probes do not reach, a cap's rim beyond their hexagon: points 2.7e-6 of the
+  // size off when the support points seen were the proof).
   const S tolerance = S(4) * support_rounding(seen[0]);
-  // Outside the points seen (a cap's contact beyond the hexagon of its six rim points): the
-  // face's extreme point towards the placed one from their centre is added, which puts a disc's
-  // rim point on the ray to it, and the hexagon's neighbours on either side then hold it.
-  for (int reach = 0; !in_planar_hull(others, count, placed, tolerance); ++reach) {
-    if (reach == kReaches) return false;
-    V centre = V::Zero();
-    for (int i = 0; i < count; ++i) centre += others[i];
-    const V toward = V(placed - centre / S(count)) - u.dot(V(placed - centre / S(count))) * u;
-    if (!(toward.squaredNorm() > S(0))) return false;
-    SimplexVertexT<S> w;
-    diff.support(unit_of(V(u + delta * unit_of(toward))), w);
-    ++iterations;
-    add(w);
-  }
+  const bool in_feature =
+      a_single ? in_support_feature(diff.b, diff.rotation, diff.translation, V(-u), placed,
+                                    S(kFeatureWitnessTolerance) * size, tolerance)
+               : in_support_feature(diff.a, Mat3T<S>::Identity(), V::Zero(), u, placed,
+                                    S(kFeatureWitnessTolerance) * size, tolerance);
+  if (!in_feature) return false;
   pair.w = pair.a - pair.b;
   pair.dir = u;
   best.value = value;
   best.vertex = pair;
+  return true;
+}
+
+/// The witness pair along the unit `normal` where the cores touch or nearly do, which Newton's
+/// steps leave alone (the normal is ill-conditioned there): when one core has a single point on
+/// its support plane, that point and its shift onto the other core's plane, proved a point of it
+/// (smooth_side_witness()), kept when they are within `gap_limit` of each other along the normal
+/// (plus the rounding of their coordinates: 3e-12 at 1e3 from the origin).
+/// GJK's closest points are combinations of support points from several directions: beside a
+/// face, a chord of the curved core 4e-7 of the size off the contact. Returns whether `on_a` and
+/// `on_b` were set.
+template <ConvexShape A, ConvexShape B>
+bool touching_witness(const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& normal,
+                      typename A::Scalar size, typename A::Scalar gap_limit, int& iterations,
+                      Vec3T<typename A::Scalar>& on_a, Vec3T<typename A::Scalar>& on_b) {
+  using S = typename A::Scalar;
+  SupportMinimum<S> best;
+  best.normal = normal;
+  if (!smooth_side_witness(diff, size, iterations, best) ||
+      !(std::abs(best.value) <= gap_limit + S(4) * support_rounding(best.vertex)))
+    return false;
+  on_a = best.vertex.a;
+  on_b = best.vertex.b;
   return true;
 }
 

@@ -36,7 +36,9 @@
 #include "mink/shapes/sphere.hpp"
 #include "mink/shapes/triangle.hpp"
 #include "mink/support/concept.hpp"
+#include "mink/support/minkowski_sum.hpp"
 #include "mink/support/rounded.hpp"
+#include "mink/support/shape.hpp"
 
 namespace mink {
 
@@ -81,16 +83,18 @@ void plane_basis(const Vec3T<S>& n, Vec3T<S>& u, Vec3T<S>& v) {
   v = n.cross(u);
 }
 
-/// The feature spanned by `count` points that all lie within the tolerance of one support plane
-/// with unit normal `n`: their convex hull seen along n (Andrew's monotone chain), as a vertex,
-/// an edge or a counter-clockwise polygon whose normal is the plane's fitted normal (Newell).
-/// `points` is reordered. At most 64 points are read.
-template <class S>
-void feature_from_points(Vec3T<S>* points, int count, const Vec3T<S>& n, SupportFeatureT<S>& out) {
-  count = std::min(count, 64);
+/// The corners of the convex hull of `count` (<= kCapacity) points seen along unit `n` (Andrew's
+/// monotone chain), counter-clockwise about n, as indices into `points`, written to `corners`;
+/// returns their number (1: all one point, 2: all on a segment). Collinear points are dropped, and
+/// corners apart by no more than the coordinates' rounding (1e-12 of their extent) are one: a
+/// sampled feature of a sum met one rim point twice, 5e-17 apart, and the "edge" between them,
+/// pointing anywhere, moved a manifold point of the rounded sum across it, 2 % of the size inside
+/// the shape.
+template <int kCapacity, class S>
+int convex_outline(const Vec3T<S>* points, int count, const Vec3T<S>& n, int* corners) {
   if (count <= 1) {
-    out.set_point(points[0]);
-    return;
+    corners[0] = 0;
+    return 1;
   }
   Vec3T<S> u, v;
   plane_basis(n, u, v);
@@ -98,32 +102,34 @@ void feature_from_points(Vec3T<S>* points, int count, const Vec3T<S>& n, Support
     S x, y;
     int i;
   };
-  Planar p[64], hull[130];
+  Planar p[kCapacity], hull[2 * kCapacity + 2];
   for (int i = 0; i < count; ++i) p[i] = {points[i].dot(u), points[i].dot(v), i};
   std::sort(p, p + count, [](const Planar& a, const Planar& b) {
     return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.i < b.i)));
   });
-  auto turn = [](const Planar& o, const Planar& a, const Planar& b) {
-    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  // Corners apart by no more than the coordinates' rounding (1e-12 of their extent) are one,
+  // and a corner within that of the line through its neighbours is none: the sums of two
+  // parallel faces met points along their common sides 1e-17 off the line.
+  S extent = S(0);
+  for (int i = 0; i < count; ++i) extent = std::max({extent, std::abs(p[i].x), std::abs(p[i].y)});
+  const S merge = S(1e-12) * extent;
+  // Whether a lies right of the line from o to b or within `merge` of it (|turn| / |b - o| is
+  // its distance; the sum of |b - o|'s coordinates bounds that length within sqrt 2).
+  auto drop = [merge](const Planar& o, const Planar& a, const Planar& b) {
+    const S turn = (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    return turn <= merge * (std::abs(b.x - o.x) + std::abs(b.y - o.y));
   };
-  // Collinear and repeated points are dropped (turn <= 0), so the hull is strictly convex.
+  // Collinear and repeated points are dropped, so the hull is strictly convex.
   int k = 0;
   for (int i = 0; i < count; ++i) {
-    while (k >= 2 && turn(hull[k - 2], hull[k - 1], p[i]) <= S(0)) --k;
+    while (k >= 2 && drop(hull[k - 2], hull[k - 1], p[i])) --k;
     hull[k++] = p[i];
   }
   for (int i = count - 2, lower = k + 1; i >= 0; --i) {
-    while (k >= lower && turn(hull[k - 2], hull[k - 1], p[i]) <= S(0)) --k;
+    while (k >= lower && drop(hull[k - 2], hull[k - 1], p[i])) --k;
     hull[k++] = p[i];
   }
-  // The last point repeats the first. Corners apart by no more than the coordinates' rounding
-  // (1e-12 of their extent) are one: a sampled feature of a sum met one rim point twice, 5e-17
-  // apart, and the "edge" between them, pointing anywhere, moved a manifold point of the rounded
-  // sum across it, 2 % of the size inside the shape.
-  S extent = S(0);
-  for (int j = 0; j + 1 < k; ++j)
-    extent = std::max({extent, std::abs(hull[j].x), std::abs(hull[j].y)});
-  const S merge = S(1e-12) * extent;
+  // The last point repeats the first.
   auto apart = [merge](const Planar& a, const Planar& b) {
     return std::max(std::abs(a.x - b.x), std::abs(a.y - b.y)) > merge;
   };
@@ -131,19 +137,34 @@ void feature_from_points(Vec3T<S>* points, int count, const Vec3T<S>& n, Support
   for (int j = 0; j + 1 < k; ++j)
     if (n_hull == 0 || apart(hull[j], hull[n_hull - 1])) hull[n_hull++] = hull[j];
   while (n_hull > 1 && !apart(hull[n_hull - 1], hull[0])) --n_hull;
-  if (n_hull <= 1) {
-    out.set_point(points[hull[0].i]);
+  n_hull = std::max(n_hull, 1);
+  for (int j = 0; j < n_hull; ++j) corners[j] = hull[j].i;
+  return n_hull;
+}
+
+/// The feature spanned by `count` points that all lie within the tolerance of one support plane
+/// with unit normal `n`: their convex hull seen along n (convex_outline()), as a vertex, an edge
+/// or a counter-clockwise polygon whose normal is the plane's fitted normal (Newell). count >= 1;
+/// at most 64 points are read.
+template <class S>
+void feature_from_points(const Vec3T<S>* points, int count, const Vec3T<S>& n,
+                         SupportFeatureT<S>& out) {
+  count = std::min(count, 64);
+  int corners[64];
+  const int n_hull = convex_outline<64>(points, count, n, corners);
+  if (n_hull == 1) {
+    out.set_point(points[corners[0]]);
     return;
   }
   if (n_hull == 2) {
-    out.set_edge(points[hull[0].i], points[hull[1].i]);
+    out.set_edge(points[corners[0]], points[corners[1]]);
     return;
   }
   // More corners than a feature holds: an evenly spread subset (it stays convex).
   const int kept = std::min(n_hull, kMaxFeaturePoints);
   out.count = kept;
   out.disc_radius = S(0);
-  for (int j = 0; j < kept; ++j) out.points[j] = points[hull[(j * n_hull) / kept].i];
+  for (int j = 0; j < kept; ++j) out.points[j] = points[corners[(j * n_hull) / kept]];
   Vec3T<S> normal = Vec3T<S>::Zero();
   for (int j = 0; j < kept; ++j) {
     const Vec3T<S>& a = out.points[j];
@@ -508,6 +529,13 @@ template <ConvexShape T>
 void support_feature_of(const T& shape, const Vec3T<typename T::Scalar>& d,
                         typename T::Scalar tolerance, SupportFeatureT<typename T::Scalar>& out);
 
+/// A Shape's feature (defined below): its single core's own, or a sum's from its cores'.
+void support_feature(const Shape& shape, const Vec3& d, double tolerance,
+                     SupportFeatureT<double>& out);
+template <ConvexShape A, ConvexShape B>
+void support_feature(const MinkowskiSum<A, B>& sum, const Vec3T<typename A::Scalar>& d,
+                     typename A::Scalar tolerance, SupportFeatureT<typename A::Scalar>& out);
+
 /// A rounded shape's core is its inner shape's core (the manifold adds core_radius() itself).
 template <ConvexShape T>
 void support_feature(const Rounded<T>& shape, const Vec3T<typename T::Scalar>& d,
@@ -516,10 +544,10 @@ void support_feature(const Rounded<T>& shape, const Vec3T<typename T::Scalar>& d
 }
 
 /// The feature of any shape's core along d (not unit, not zero): the shape's own
-/// support_feature() overload where it has one, else a feature sampled from the support mapping
-/// (the support along d and along 8 directions tilted 0.1 rad around it, keeping the points within
-/// the tolerance of the support plane: a face or edge of a sum of polytopes, a single point of a
-/// curved surface).
+/// support_feature() overload where it has one (every shape of the library, sums and Shapes
+/// included), else a feature sampled from the support mapping (the support along d and along 8
+/// directions tilted 0.1 rad around it, keeping the points within the tolerance of the support
+/// plane, held to point_set_feature()'s tests).
 template <ConvexShape T>
 void support_feature_of(const T& shape, const Vec3T<typename T::Scalar>& d,
                         typename T::Scalar tolerance, SupportFeatureT<typename T::Scalar>& out) {
@@ -548,6 +576,94 @@ void support_feature_of(const T& shape, const Vec3T<typename T::Scalar>& d,
     };
     detail::point_set_feature(shape, n, tolerance, gather, out);
   }
+}
+
+namespace detail {
+
+/// Most points of a sum's feature before its outline is taken: two caps of rim points summed.
+inline constexpr int kMaxSumCombinations = kMaxFeaturePoints * kMaxFeaturePoints;
+
+/// The points of a sum's feature along unit n within `within` of its support plane, written to
+/// `near` (kMaxNearPoints of room); returns their count. `for_each_part(f)` calls f(feature) with
+/// each part's own feature along n within `within`. A face of a Minkowski sum is the sum of its
+/// parts' features along the same direction, so each part's exact feature (a face, an edge, a rim
+/// point) is added to the outline of the sum so far, and the new outline, seen along n, is kept
+/// (an evenly spread subset of it when it has more corners than there is room for; it stays
+/// convex). Each part may lie up to `within` below its own plane, the sum up to the number of
+/// parts times that; point_set_feature() then holds the polygon to planarity and support.
+template <class S, class ForEachPart>
+int sum_feature_points(ForEachPart&& for_each_part, const Vec3T<S>& n, Vec3T<S>* near) {
+  int count = 0;
+  for_each_part([&](const SupportFeatureT<S>& f) {
+    if (count == 0) {
+      count = f.count;
+      std::copy(f.points, f.points + f.count, near);
+      return;
+    }
+    Vec3T<S> sums[kMaxSumCombinations];
+    int m = 0;
+    const int used = std::min(count, kMaxSumCombinations / f.count);
+    for (int i = 0; i < used; ++i)
+      for (int j = 0; j < f.count; ++j) sums[m++] = near[(i * count) / used] + f.points[j];
+    int corners[kMaxSumCombinations];
+    const int outline = convex_outline<kMaxSumCombinations>(sums, m, n, corners);
+    count = std::min(outline, kMaxNearPoints);
+    for (int i = 0; i < count; ++i) near[i] = sums[corners[(i * outline) / count]];
+  });
+  return count;
+}
+
+}  // namespace detail
+
+/// A Shape of one core (a polytope or a box paired with a sum, which runs on Shapes) takes that
+/// core's exact feature. A sum takes the sum of its cores' features (detail::sum_feature_points()),
+/// held to the planarity and support tests of point_set_feature(), whose tolerance shrinks until
+/// the polygon is a face of the sum: before, the sum's feature was sampled from 9 support points
+/// 0.1 rad apart, which made a sliver "face" of a cone's base rim tilted 54 degrees from the
+/// normal, and gave a polytope beside a sum sampled corners (one order found an edge of its
+/// triangle, the other the triangle).
+inline void support_feature(const Shape& shape, const Vec3& d, double tolerance,
+                            SupportFeatureT<double>& out) {
+  if (shape.cores().empty()) {
+    out.set_point(Vec3::Zero());
+    return;
+  }
+  if (shape.cores().size() == 1) {
+    visit_core(shape.cores().front(),
+               [&](const auto& c) { support_feature_of(c, d, tolerance, out); });
+    return;
+  }
+  const Vec3 n = d.normalized();
+  auto gather = [&](double, double within, Vec3* near) {
+    auto for_each_part = [&](auto&& add) {
+      for (const Core& core : shape.cores()) {
+        SupportFeatureT<double> f;
+        visit_core(core, [&](const auto& c) { support_feature_of(c, n, within, f); });
+        add(f);
+      }
+    };
+    return detail::sum_feature_points<double>(for_each_part, n, near);
+  };
+  detail::point_set_feature(shape, n, tolerance, gather, out);
+}
+
+/// A sum's feature from its two parts' (as a Shape's above).
+template <ConvexShape A, ConvexShape B>
+void support_feature(const MinkowskiSum<A, B>& sum, const Vec3T<typename A::Scalar>& d,
+                     typename A::Scalar tolerance, SupportFeatureT<typename A::Scalar>& out) {
+  using S = typename A::Scalar;
+  const Vec3T<S> n = d.normalized();
+  auto gather = [&](S, S within, Vec3T<S>* near) {
+    auto for_each_part = [&](auto&& add) {
+      SupportFeatureT<S> f;
+      support_feature_of(sum.a, n, within, f);
+      add(f);
+      support_feature_of(sum.b, n, within, f);
+      add(f);
+    };
+    return detail::sum_feature_points<S>(for_each_part, n, near);
+  };
+  detail::point_set_feature(sum, n, tolerance, gather, out);
 }
 
 }  // namespace mink

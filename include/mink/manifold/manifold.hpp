@@ -149,22 +149,27 @@ void keep_four(const ClippedPoints<S>& clipped, const PoseT<S>& pose_a, S size,
 /// may be a face's own, an affine image of it), for the reduction to keep.
 ///
 /// A clipped point that is the pair's own corner, rounded the face's way, gives the pair its
-/// slot: a face of a rounded core moves by the radius r along its own normal, tilted by t from
-/// the contact's, so its corner lies r t from the corner's deepest point and r t^2 / 2 shallower
-/// (1.2e-5 apart for a rounded triangle tilted 8e-5 rad, which kept both, 4 points for 3). A
-/// point within sqrt(2 r (depth - its depth)) of the pair, plus `min_length` (the reduction's
-/// repeat distance; `radii` is r, both cores' radii), is that corner.
+/// slot: a face of a rounded core moves by the radius r along its own normal, tilted from the
+/// contact's, so its corner lies apart from the corner's deepest point and a little shallower
+/// (1.2e-5 apart for a rounded triangle tilted 8e-5 rad, which kept both, 4 points for 3). Both
+/// lie on the sphere of radius r about the pair's core point: a point of A within r_a (plus
+/// `min_length`, the reduction's repeat distance) of point_a - r_a n, or of B within r_b of
+/// point_b + r_b n, is that corner. Any other point of the rounded surface is farther from the
+/// core point (a reach of sqrt(2 r (depth - its depth)) from the pair, used before, took a base's
+/// rim point 0.2 away for the corner of a cone-and-capsule sum, and which one depended on the
+/// order of the shapes).
 template <class S>
-void add_deepest_pair(const ContactResultT<S>& c, const Vec3T<S>& n, S margin, S radii,
-                      S min_length, ClippedPoints<S>& clipped) {
+void add_deepest_pair(const ContactResultT<S>& c, const Vec3T<S>& n, S margin, S radius_a,
+                      S radius_b, S min_length, ClippedPoints<S>& clipped) {
   const S depth = c.intersect ? c.depth : -c.distance;
+  const Vec3T<S> core_a = c.point_a - radius_a * n, core_b = c.point_b + radius_b * n;
   int shallowest = 0, same_corner = -1;
   S deepest = -std::numeric_limits<S>::infinity();
   for (int i = 0; i < clipped.count; ++i) {
     deepest = std::max(deepest, clipped.planar[i].depth);
     if (clipped.planar[i].depth < clipped.planar[shallowest].depth) shallowest = i;
-    const S reach = std::sqrt(S(2) * radii * std::max(S(0), depth - clipped.planar[i].depth));
-    if (same_corner < 0 && (clipped.on_a[i] - c.point_a).norm() <= reach + min_length)
+    if (same_corner < 0 && ((clipped.on_a[i] - core_a).norm() <= radius_a + min_length ||
+                            (clipped.on_b[i] - core_b).norm() <= radius_b + min_length))
       same_corner = i;
   }
   if (!(depth > deepest + margin)) return;
@@ -219,8 +224,8 @@ void manifold_from_contact(const A& a, const PoseT<typename A::Scalar>& pose_a, 
   clip_features(a, b, relative, c.normal, options.feature_tolerance, min_depth, size,
                 S(kSideSlack) * size, clipped);
   if (clipped.count > 0)
-    add_deepest_pair(c, c.normal, options.tolerances.relative * size,
-                     a.core_radius() + b.core_radius(), S(kRepeatLength) * size, clipped);
+    add_deepest_pair(c, c.normal, options.tolerances.relative * size, a.core_radius(),
+                     b.core_radius(), S(kRepeatLength) * size, clipped);
   if (clipped.count > 0) {
     keep_four(clipped, pose_a, size, result);
   } else {

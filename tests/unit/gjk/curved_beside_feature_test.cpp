@@ -39,6 +39,7 @@ struct Scene {
   Vec3 normal;       // n: from the polyhedral shape towards the curved one
   double gap = 0;    // < 0: the shapes overlap by -gap
   Vec3 half, radii;  // the box's half extents, the ellipsoid's radii (for the oracle)
+  Feature feature = Feature::Face;
   double size = 0;
   std::string note;
 };
@@ -47,7 +48,10 @@ const char* feature_name(Feature f) {
   return f == Feature::Face ? "face" : f == Feature::Edge ? "edge" : "corner";
 }
 
-Scene make_scene(std::uint64_t seed, bool overlapping) {
+enum class Placement { Apart, Overlapping, Touching };
+
+Scene make_scene(std::uint64_t seed, Placement placement) {
+  const bool overlapping = placement == Placement::Overlapping;
   oracle::Rng rng(seed);
   Scene s;
   const Vec3 half(rng.uniform(0.1, 1.5), rng.uniform(0.1, 1.5), rng.uniform(0.1, 1.5));
@@ -68,6 +72,7 @@ Scene make_scene(std::uint64_t seed, bool overlapping) {
   // The feature, a point e on it and a normal n in its cone (box frame), from the sign of each
   // axis and which axes are free.
   const auto feature = static_cast<Feature>(rng.integer(0, 2));
+  s.feature = feature;
   const int free_axes = feature == Feature::Face ? 2 : feature == Feature::Edge ? 1 : 0;
   const int first = rng.integer(0, 2);
   Vec3 e, n = Vec3::Zero();
@@ -97,8 +102,9 @@ Scene make_scene(std::uint64_t seed, bool overlapping) {
   const Vec3 scaled = radii.cwiseProduct(d);
   const Vec3 local_support = radii.cwiseProduct(scaled) / scaled.norm() + margin * d;
   s.size = half.norm() + radii.maxCoeff() + margin;
-  s.gap =
-      overlapping ? -s.size * rng.log_uniform(1e-9, 1e-2) : s.size * rng.log_uniform(1e-9, 1e-1);
+  s.gap = placement == Placement::Touching ? s.size * rng.uniform(-1e-13, 1e-13)
+          : overlapping                    ? -s.size * rng.log_uniform(1e-9, 1e-2)
+                                           : s.size * rng.log_uniform(1e-9, 1e-1);
   const Vec3 target = s.contact + s.gap * s.normal;
   s.pose_curved = Pose::from(target - q * local_support, q);
   s.note = std::string(feature_name(feature)) + (as_polytope ? " of a polytope" : " of a box") +
@@ -144,7 +150,7 @@ double far_rounding(const Scene& s) {
 TEST(CurvedBesideFeature, DistanceAndNormalAreExactInBothOrders) {
   const int count = oracle::sweep_count(600, 200);
   for (int i = 0; i < count; ++i) {
-    const Scene s = make_scene(9100 + i, false);
+    const Scene s = make_scene(9100 + i, Placement::Apart);
     const double rounding = far_rounding(s);
     expect_exact(s, mink::distance(s.polyhedral, s.pose_polyhedral, s.curved, s.pose_curved), false,
                  rounding);
@@ -162,7 +168,7 @@ TEST(CurvedBesideFeature, DepthAndNormalAreExactInBothOrders) {
   const int count = oracle::sweep_count(200, 40);
   int confirmed = 0;
   for (int i = 0; i < count; ++i) {
-    const Scene s = make_scene(19100 + i, true);
+    const Scene s = make_scene(19100 + i, Placement::Overlapping);
     // The oracle's least separation: n's own is the depth, so n is the normal when no direction
     // does better.
     const oracle::CurvedShape box{oracle::CurvedKind::Box, 0, 0, s.half.cast<oracle::Real>()};
@@ -185,6 +191,33 @@ TEST(CurvedBesideFeature, DepthAndNormalAreExactInBothOrders) {
   }
   // Most scenes have n as their normal: the test checks something.
   EXPECT_GE(confirmed, count * 3 / 4);
+}
+
+TEST(CurvedBesideFeature, TouchingPointsAreTheContact) {
+  // Touching to 1e-13 of the size: no Newton step runs (the normal is ill-conditioned there),
+  // and GJK's closest points, combinations of support points from several directions, lay a
+  // chord of the ellipsoid off the contact (4e-7 of the size, probe 52's W-face). Both points
+  // must be e; beside a face the normal is its normal (at an edge or a corner any normal of its
+  // cone is right).
+  const int count = oracle::sweep_count(300, 100);
+  for (int i = 0; i < count; ++i) {
+    const Scene s = make_scene(29100 + i, Placement::Touching);
+    const double tolerance = 1e-9 * s.size + far_rounding(s);
+    for (const bool flip : {false, true}) {
+      const std::string order = flip ? " (curved shape first)" : " (polyhedral shape first)";
+      const mink::ContactResult r =
+          flip ? mink::contact(s.curved, s.pose_curved, s.polyhedral, s.pose_polyhedral)
+               : mink::contact(s.polyhedral, s.pose_polyhedral, s.curved, s.pose_curved);
+      ASSERT_TRUE(r.intersect) << s.note << order;
+      EXPECT_LE(r.depth, tolerance) << s.note << order;
+      EXPECT_LE((r.point_a - s.contact).norm(), tolerance) << s.note << order;
+      EXPECT_LE((r.point_b - s.contact).norm(), tolerance) << s.note << order;
+      if (s.feature == Feature::Face) {
+        EXPECT_LE(angle(r.normal, flip ? Vec3(-s.normal) : s.normal), 1e-9) << s.note << order;
+      }
+    }
+    if (::testing::Test::HasFailure()) break;
+  }
 }
 
 }  // namespace
