@@ -128,7 +128,9 @@ TEST(FeatureSum, SumOfTwoPolytopesIsTheSumOfTheirFeatures) {
       EXPECT_LE(nearest, 1e-12 * size);
       ++checked;
     }
-    if (f.count >= 3) EXPECT_GT(f.normal.dot(n), 1 - 1e-12);
+    if (f.count >= 3) {
+      EXPECT_GT(f.normal.dot(n), 1 - 1e-12);
+    }
   }
   EXPECT_GE(faces, 40);
   EXPECT_GT(checked, 150);
