@@ -1,10 +1,11 @@
 // manifold() of sums ("sweeps") with curved parts (cones, ellipsoids, cylinders) against
 // primitives, through the run-time Shape. A sum's feature is the sum of its parts' features
 // (feature_sum_test.cpp; sampled from its support mapping before stop 53), and a curved part's
-// points may lie near the support plane without being on one plane. Checked against support functions written here in closed form (independent
-// of the library's support mappings): no manifold point of A lies beyond A's support plane along
-// the normal, none of B beyond B's along the reverse, and no point is deeper than contact()'s
-// depth, which is itself checked against the support function of A - B.
+// points may lie near the support plane without being on one plane. Checked against support
+// functions written here in closed form (independent of the library's support mappings): no
+// manifold point of A lies beyond A's support plane along the normal, none of B beyond B's along
+// the reverse, and no point is deeper than contact()'s depth, which is itself checked against the
+// support function of A - B.
 #include <gtest/gtest.h>
 
 #include <algorithm>
