@@ -326,11 +326,13 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   S core_depth = std::max(S(0), epa.depth);
   Vec3T<S> on_a = epa.a, on_b = epa.b;
+  bool refined = false;
   if constexpr (detail::kCurvedPair<A, B>) {
     // Curved cores: EPA's normal of a smooth minimum is good to the square root of its tolerance
     // (1e-5 rad); Newton's steps (gjk/support_newton.hpp) take it, and the points (the support
-    // points along it), to the rounding. Kept only as deep as EPA's upper end, to rounding.
-    if (tolerances.refine_curved_normals && !epa.degenerate && epa.depth > touch) {
+    // points along it), to the rounding. Kept only as deep as EPA's upper end, to rounding. Cores
+    // that touch too (see separate_cores()).
+    if (tolerances.refine_curved_normals && !epa.degenerate) {
       auto least = detail::SupportMinimum<S>::at(diff, n, result.iterations);
       const S rounding =
           S(16) * std::numeric_limits<S>::epsilon() * least.vertex.w.cwiseAbs().maxCoeff();
@@ -342,6 +344,7 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
         on_a = least.vertex.a;
         on_b = least.vertex.b;
         detail::share_residual(on_a, on_b, n, core_depth);
+        refined = true;
       }
     }
   }
@@ -358,12 +361,13 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     // as distance() does, one held and the other placed by v, moved a point touching a needle
     // off its shape by the whole rounding.)
     // A tetrahedron (the cores enclose the origin) gives its face nearest the origin instead.
-    // Curved cores: from the normal where one core has a single point (detail::touching_witness()).
-    bool placed = false;
+    // Curved cores: Newton's points above, else from the normal where one core has a single
+    // point (detail::touching_witness()).
+    bool placed = refined;
     if constexpr (detail::kCurvedPair<A, B>)
-      placed =
-          tolerances.refine_curved_normals &&
-          detail::touching_witness(diff, n, size, S(16) * touch, result.iterations, on_a, on_b);
+      placed = placed || (tolerances.refine_curved_normals &&
+                          detail::touching_witness(diff, n, size, S(16) * touch, result.iterations,
+                                                   on_a, on_b));
     if (!placed) {
       SimplexT<S> touching = gjk.simplex;
       if (touching.size == 4) detail::reduce_to_nearest_face(touching);

@@ -752,7 +752,8 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     // and the pair is their closest points: the same point twice where the features overlap
     // seen along the normal (every tie above), else split between them.
     const Vec3T<S>& n = least.normal;
-    const Vec3T<S> t1 = unit_of(orthogonal(n)), t2 = n.cross(t1);
+    Vec3T<S> t1, t2;
+    plane_basis(n, t1, t2);
     const S kTilt = std::max(S(1e-9), S(64) * std::numeric_limits<S>::epsilon());  // float: 8e-6
     Vec3T<S> on_a[5] = {least.vertex.a}, on_b[5] = {least.vertex.b};
     for (int k = 0; k < 4; ++k) {

@@ -156,10 +156,13 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
   CoreSeparation<S> out;
   find_separation(diff, gjk, touch, tolerances.max_iterations, iterations, out);
   if constexpr (kCurvedPair<A, B>) {
-    // Curved cores apart: the normal of a smooth minimum is good to the square root of GJK's
-    // tolerance; Newton's steps (gjk/support_newton.hpp) take it to the rounding, and the points
-    // become the support points along it, lined up at GJK's distance.
-    if (tolerances.refine_curved_normals && gjk.upper > touch && std::isfinite(gjk.upper)) {
+    // Curved cores apart or touching: the normal of a smooth minimum is good to the square root
+    // of GJK's tolerance; Newton's steps (gjk/support_newton.hpp) take it to the rounding, and
+    // the points become the support points along it, lined up at GJK's distance. Touching cores
+    // too: where the minimum is sharp (a cone's slant against a cylinder's rim), GJK's normal
+    // left the points 5e-7 of the size from the contact; where it is flat (a corner against a
+    // rim), the steps leave the value within its rounding and the points where they were.
+    if (tolerances.refine_curved_normals && std::isfinite(gjk.upper)) {
       auto least = SupportMinimum<S>::at(diff, out.normal, iterations);
       if (newton_on_support(diff, size, tolerances.relative_depth * size, 3, iterations, least) >
           0) {
@@ -169,10 +172,6 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
         out.on_b = least.vertex.b;
         share_residual(out.on_a, out.on_b, out.normal, -gjk.upper);
       }
-    } else if (tolerances.refine_curved_normals && std::isfinite(gjk.upper)) {
-      // Touching or nearly: GJK's normal stays, the points come from it.
-      if (touching_witness(diff, out.normal, size, S(16) * touch, iterations, out.on_a, out.on_b))
-        share_residual(out.on_a, out.on_b, out.normal, -gjk.upper);
     }
   }
   const bool capped = gjk.status == Status::IterationLimit;

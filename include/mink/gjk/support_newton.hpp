@@ -215,8 +215,8 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
   for (int step = 0; step < max_steps; ++step) {
     const V u = best.normal;
     const V& s = best.vertex.w;
-    const V t1 = unit_of(V(orthogonal(u).cross(u)));
-    const V t2 = u.cross(t1);
+    V t1, t2;
+    plane_basis(u, t1, t2);
     const S g1 = t1.dot(s), g2 = t2.dot(s);
     const S rounding = support_rounding(best.vertex);
     const S gradient = std::hypot(g1, g2);
@@ -229,10 +229,20 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
     const V jump1 = w1.w - s, jump2 = w2.w - s;
     const S smooth = S(4) * delta * size;
     if (jump1.norm() > smooth || jump2.norm() > smooth) {
-      const SimplexVertexT<S>& across = jump1.norm() >= jump2.norm() ? w1 : w2;
-      if (secant_on_kink(diff, kink_edge(across, best.vertex, smooth), size, iterations, best))
-        ++kept;
-      break;
+      // A kink's jump keeps its length as the turn shrinks; a smooth core's shrinks with it. Its
+      // radius of curvature may well exceed the size: a cylinder's rim seen from 0.07 rad off its
+      // axis curves with r / 0.07 along the rim, and was taken for a kink, which left the normal
+      // at EPA's 1e-5 rad.
+      const bool first = jump1.norm() >= jump2.norm();
+      const SimplexVertexT<S>& across = first ? w1 : w2;
+      SimplexVertexT<S> closer;
+      diff.support(unit_of(V(u + (delta / S(16)) * (first ? t1 : t2))), closer);
+      ++iterations;
+      if ((closer.w - s).norm() > S(0.25) * (across.w - s).norm()) {
+        if (secant_on_kink(diff, kink_edge(across, best.vertex, smooth), size, iterations, best))
+          ++kept;
+        break;
+      }
     }
     // The support point's derivative along t_j, and the Hessian, symmetrised.
     const V d1 = jump1 / delta, d2 = jump2 / delta;
@@ -289,24 +299,16 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
 /// lies within it of the face's plane.
 inline constexpr double kFeatureWitnessTolerance = 1e-9;
 
-/// Whether `target` lies in the support feature of `core` along `dir` (A's frame; the core's
-/// frame is mapped to it by `rotation`, `translation`), seen along `dir`, to `tolerance`: inside
-/// its face (a cap's whole disc), on its edge or at its corner. The feature (manifold/feature.hpp)
-/// is every core's exact face, edge or corner, the sum of its parts' for a sum: its points are
+/// Whether `target` lies in the support feature `f` (in a core's frame, mapped to A's by
+/// `rotation`, `translation`) seen along unit `u`, to `tolerance` (unit: length): inside its face
+/// (a cap's whole disc), on its edge or at its corner. The features (manifold/feature.hpp) are
+/// every core's exact face, edge or corner, the sum of its parts' for a sum: their points are
 /// points of the core, so containment proves that `target`, on the support plane, is one too.
-/// `feature_tolerance` is how far below the support plane its points may lie (unit: length).
-template <ConvexShape T>
-bool in_support_feature(const T& core, const Mat3T<typename T::Scalar>& rotation,
-                        const Vec3T<typename T::Scalar>& translation,
-                        const Vec3T<typename T::Scalar>& dir,
-                        const Vec3T<typename T::Scalar>& target,
-                        typename T::Scalar feature_tolerance, typename T::Scalar tolerance) {
-  using S = typename T::Scalar;
+template <class S>
+bool in_feature(const SupportFeatureT<S>& f, const Mat3T<S>& rotation, const Vec3T<S>& translation,
+                const Vec3T<S>& u, const Vec3T<S>& target, S tolerance) {
   using V = Vec3T<S>;
-  SupportFeatureT<S> f;
-  support_feature_of(core, V(rotation.transpose() * dir), feature_tolerance, f);
   if (f.count < 1) return false;
-  const V u = unit_of(dir);
   auto across = [&u](const V& x) { return V(x - u.dot(x) * u); };  // seen along u
   V points[kMaxFeaturePoints];
   for (int i = 0; i < f.count; ++i) points[i] = rotation * f.points[i] + translation;
@@ -314,8 +316,7 @@ bool in_support_feature(const T& core, const Mat3T<typename T::Scalar>& rotation
   if (f.count == 2) {
     const V edge = across(V(points[1] - points[0])), to = across(V(target - points[0]));
     if (!(edge.squaredNorm() > S(0))) return to.norm() <= tolerance;
-    const S t = std::clamp(to.dot(edge) / edge.squaredNorm(), S(0), S(1));
-    return (to - t * edge).norm() <= tolerance;
+    return (to - nearest_weight<S>(V::Zero(), edge, to) * edge).norm() <= tolerance;
   }
   const V normal = rotation * f.normal;
   if (f.disc_radius > S(0)) {
@@ -336,59 +337,99 @@ bool in_support_feature(const T& core, const Mat3T<typename T::Scalar>& rotation
   return true;
 }
 
+/// The support features of both cores along unit `u` (A's frame; B's is along -u), each within
+/// `tolerance` (unit: length) of its support plane, in the cores' own frames.
+template <ConvexShape A, ConvexShape B>
+void core_features(const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& u,
+                   typename A::Scalar tolerance, SupportFeatureT<typename A::Scalar>& feature_a,
+                   SupportFeatureT<typename A::Scalar>& feature_b) {
+  support_feature_of(diff.a, u, tolerance, feature_a);
+  support_feature_of(diff.b, Vec3T<typename A::Scalar>(diff.rotation.transpose() * -u), tolerance,
+                     feature_b);
+}
+
+/// How far below the support plane a face may lie to be tried as the normal by snap_to_face()
+/// (a fraction of the size): what EPA's or GJK's normal, good to the square root of their
+/// tolerance (1e-5 rad), tilts a face of the size's width by.
+inline constexpr double kFaceSnapReach = 1e-5;
+
+/// Moves `best` to the normal of a face of either core near it (within kFaceSnapReach of the
+/// size of the support plane) when the support value there is no higher, to rounding. A face's
+/// normal is a kink of h in every direction, which neither Newton's steps nor the secant along
+/// one kink reach: a cylinder's rim pressed into a cone's base (at 1e6) kept EPA's normal,
+/// 2.1e-8 rad off the base's, where the base no longer counts as a face to 1e-9 of the size, and
+/// the points 3.5e-8 of the size off the contact. Up to two support calls (counted in
+/// `iterations`) and two features; returns whether `best` moved.
+template <ConvexShape A, ConvexShape B>
+bool snap_to_face(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
+                  SupportMinimum<typename A::Scalar>& best) {
+  using S = typename A::Scalar;
+  using V = Vec3T<S>;
+  const V u = best.normal;
+  SupportFeatureT<S> feature_a, feature_b;
+  core_features(diff, u, S(kFaceSnapReach) * size, feature_a, feature_b);
+  V faces[2];
+  int count = 0;
+  if (feature_a.count >= 3) faces[count++] = unit_of(feature_a.normal);
+  if (feature_b.count >= 3) faces[count++] = unit_of(V(-(diff.rotation * feature_b.normal)));
+  bool moved = false;
+  for (int i = 0; i < count; ++i) {
+    const V& n = faces[i];
+    if (!is_finite(n) || !(n.dot(u) > S(0)) || n == best.normal) continue;
+    SimplexVertexT<S> at;
+    diff.support(n, at);
+    ++iterations;
+    const S h = n.dot(at.w);
+    if (std::isfinite(h) && h <= best.value + support_rounding(at)) {
+      best.value = h;
+      best.normal = n;
+      best.vertex = at;
+      best.vertex.dir = n;
+      moved = true;
+    }
+  }
+  return moved;
+}
+
 /// The witness pair along `best.normal` from the support points there, when one core has a
 /// single point on its support plane (smooth or strictly convex there, or a corner) and the
 /// other does not (a face or an edge, whose support point is one of its corners, not the point
 /// of contact). The single point is the one core's witness; the other's is placed from it by
 /// the value along the normal, onto that core's support plane, and kept only where it lies in
-/// that core's support feature there (in_support_feature()), a proof that it is a point of that
-/// core. A core has a single point when its support point moves by at most what a smooth one
-/// does (4 delta size) as the direction turns by delta six ways, 60 degrees apart; a face's or
-/// an edge's jumps to other corners. GJK's and EPA's points are combinations of support points
-/// from several directions: beside a face, the curved core's are a chord below its surface, and
-/// the face's point lies off the contact by the chord's tilt (2e-7 of the size, with the normal
-/// exact to 1e-13). 7 support calls (counted in `iterations`) and one feature; returns whether
-/// `best.vertex` changed.
+/// that core's support feature there (in_feature()), a proof that it is a point of that core.
+/// Which core has a single point, and the other's feature, come from the cores' exact support
+/// features (manifold/feature.hpp) within kFeatureWitnessTolerance of the size of the plane:
+/// exact, where probes turning the normal by 1e-7 rad six ways (used before) took a rim seen
+/// within 1e-7 rad of its axis for a face, its support point jumping round the rim, and at one
+/// support call where the probes took seven. GJK's and EPA's points are
+/// combinations of support points from several directions: beside a face, the curved core's
+/// are a chord below its surface, and the face's point lies off the contact by the chord's tilt
+/// (2e-7 of the size, with the normal exact to 1e-13). One support call (counted in
+/// `iterations`) and two features; returns whether `best.vertex` changed.
 template <ConvexShape A, ConvexShape B>
 bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
                          SupportMinimum<typename A::Scalar>& best) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  constexpr int kProbes = 6;
-  const S delta = std::max(S(1e-7), std::sqrt(std::numeric_limits<S>::epsilon()));
   const V u = best.normal;
-  SimplexVertexT<S> seen[kProbes + 1];
-  diff.support(u, seen[0]);
-  const V t1 = unit_of(V(orthogonal(u).cross(u)));
-  const V t2 = u.cross(t1);
-  const S smooth = S(4) * delta * size;
-  bool a_single = true, b_single = true;
-  for (int k = 1; k <= kProbes; ++k) {
-    const S turn = S(1.0471975511965976) * S(k);  // 60 degrees
-    diff.support(unit_of(V(u + delta * (std::cos(turn) * t1 + std::sin(turn) * t2))), seen[k]);
-    a_single = a_single && (seen[k].a - seen[0].a).norm() <= smooth;
-    b_single = b_single && (seen[k].b - seen[0].b).norm() <= smooth;
-  }
-  iterations += kProbes + 1;
+  SupportFeatureT<S> feature_a, feature_b;
+  core_features(diff, u, S(kFeatureWitnessTolerance) * size, feature_a, feature_b);
+  const bool a_single = feature_a.count == 1, b_single = feature_b.count == 1;
   if (a_single == b_single) return false;
-  const S value = u.dot(seen[0].w);
-  if (!std::isfinite(value) || !is_finite(seen[0].w)) return false;
-  SimplexVertexT<S> pair = seen[0];
+  SimplexVertexT<S> pair;
+  diff.support(u, pair);
+  ++iterations;
+  const S value = u.dot(pair.w);
+  if (!std::isfinite(value) || !is_finite(pair.w)) return false;
+  const S tolerance = S(4) * support_rounding(pair);
   if (a_single)
     pair.b = pair.a - value * u;
   else
     pair.a = pair.b + value * u;
-  const V& placed = a_single ? pair.b : pair.a;
-  // The other core's exact feature along the normal must hold the placed point (a face's
-  // corners that the probes do not reach, a cap's rim beyond their hexagon: points 2.7e-6 of the
-  // size off when the support points seen were the proof).
-  const S tolerance = S(4) * support_rounding(seen[0]);
-  const bool in_feature =
-      a_single ? in_support_feature(diff.b, diff.rotation, diff.translation, V(-u), placed,
-                                    S(kFeatureWitnessTolerance) * size, tolerance)
-               : in_support_feature(diff.a, Mat3T<S>::Identity(), V::Zero(), u, placed,
-                                    S(kFeatureWitnessTolerance) * size, tolerance);
-  if (!in_feature) return false;
+  const bool in_other =
+      a_single ? in_feature<S>(feature_b, diff.rotation, diff.translation, u, V(pair.b), tolerance)
+               : in_feature<S>(feature_a, Mat3T<S>::Identity(), V::Zero(), u, V(pair.a), tolerance);
+  if (!in_other) return false;
   pair.w = pair.a - pair.b;
   pair.dir = u;
   best.value = value;
@@ -420,22 +461,24 @@ bool touching_witness(const CoreDifference<A, B>& diff, const Vec3T<typename A::
 }
 
 /// Newton steps on h from `best` (its value must be h(best.normal), its vertex that support
-/// point), at most `max_steps`, each 3 support calls (counted in `iterations`); `size` bounds
-/// the radii of curvature of A - B (the sum of the bounding radii). A step across a kink (the
-/// support point jumps by more than a smooth h allows) hands over to secant_on_kink(). The
-/// points then come from the normal where one core is smooth and the other not
-/// (smooth_side_witness(), 7 to 10 support calls). `best` only improves, and only to a vertex
-/// that is a witness pair: its points' offset vertex.w - value normal across the normal within
-/// `witness_gap` (unit: length). A flat face's support point is one corner of it, not the point
-/// of contact: an answer that keeps one is dropped and `best` left as it came (with its points
-/// from its normal, as above). Returns the number of steps kept, the points' placing counting
-/// one (0 when nothing changed).
+/// point), at most `max_steps`, each 3 or 4 support calls (counted in `iterations`); `size` is
+/// the sum of the bounding radii. A step across a kink (the support point jumps, and by as much
+/// for a turn 16 times smaller) hands over to secant_on_kink(). A face's normal nearby is then
+/// tried (snap_to_face()). The points come from the normal where one core is smooth and the
+/// other not
+/// (smooth_side_witness(), one support call and two features). `best` only improves, and only to a
+/// vertex that is a witness pair: its points' offset vertex.w - value normal across the normal
+/// within `witness_gap` (unit: length). A flat face's support point is one corner of it, not the
+/// point of contact: an answer that keeps one is dropped and `best` left as it came (with its
+/// points from its normal, as above). Returns the number of steps kept, the points' placing
+/// counting one (0 when nothing changed).
 template <ConvexShape A, ConvexShape B>
 int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
                       typename A::Scalar witness_gap, int max_steps, int& iterations,
                       SupportMinimum<typename A::Scalar>& best) {
   const SupportMinimum<typename A::Scalar> start = best;
   int kept = newton_steps(diff, size, max_steps, iterations, best);
+  if (snap_to_face(diff, size, iterations, best)) ++kept;
   if (smooth_side_witness(diff, size, iterations, best)) ++kept;
   if (kept > 0 && !((best.vertex.w - best.value * best.normal).norm() <= witness_gap)) {
     best = start;

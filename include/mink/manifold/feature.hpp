@@ -24,6 +24,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "mink/math/orthogonal.hpp"
 #include "mink/shapes/box.hpp"
 #include "mink/shapes/capsule.hpp"
 #include "mink/shapes/cone.hpp"
@@ -73,15 +74,6 @@ struct SupportFeatureT {
 };
 
 namespace detail {
-
-/// Unit vectors u, v with (u, v, n) right-handed and orthonormal, for a unit n.
-template <class S>
-void plane_basis(const Vec3T<S>& n, Vec3T<S>& u, Vec3T<S>& v) {
-  u = std::abs(n.x()) > std::abs(n.z()) ? Vec3T<S>(-n.y(), n.x(), S(0))
-                                        : Vec3T<S>(S(0), -n.z(), n.y());
-  u.normalize();
-  v = n.cross(u);
-}
 
 /// The corners of the convex hull of `count` (<= kCapacity) points seen along unit `n` (Andrew's
 /// monotone chain), counter-clockwise about n, as indices into `points`, written to `corners`;
@@ -584,13 +576,14 @@ namespace detail {
 inline constexpr int kMaxSumCombinations = kMaxFeaturePoints * kMaxFeaturePoints;
 
 /// The points of a sum's feature along unit n within `within` of its support plane, written to
-/// `near` (kMaxNearPoints of room); returns their count. `for_each_part(f)` calls f(feature) with
-/// each part's own feature along n within `within`. A face of a Minkowski sum is the sum of its
-/// parts' features along the same direction, so each part's exact feature (a face, an edge, a rim
-/// point) is added to the outline of the sum so far, and the new outline, seen along n, is kept
-/// (an evenly spread subset of it when it has more corners than there is room for; it stays
-/// convex). Each part may lie up to `within` below its own plane, the sum up to the number of
-/// parts times that; point_set_feature() then holds the polygon to planarity and support.
+/// `near` (kMaxNearPoints of room); returns their count. `for_each_part(f)` calls f(feature)
+/// with each part's own feature along n within `within`. A face of a Minkowski sum is
+/// the sum of its parts' features along the same direction, so each part's exact feature (a
+/// face, an edge, a rim point) is added to the outline of the sum so far, and the new outline,
+/// seen along n, is kept (an evenly spread subset of it when it has more corners than there is
+/// room for; it stays convex). Each part may lie up to `within` below its own plane, the sum up
+/// to the number of parts times that; point_set_feature() then holds the polygon to planarity
+/// and support.
 template <class S, class ForEachPart>
 int sum_feature_points(ForEachPart&& for_each_part, const Vec3T<S>& n, Vec3T<S>* near) {
   int count = 0;
@@ -613,6 +606,23 @@ int sum_feature_points(ForEachPart&& for_each_part, const Vec3T<S>& n, Vec3T<S>*
   return count;
 }
 
+/// The feature of the sum `shape` along d from its parts' (sum_feature_points()), held to the
+/// planarity and support tests of point_set_feature(), whose tolerance shrinks until the polygon
+/// is a face of the sum. `for_each_part(n, within, f)` calls f with each part's feature along
+/// unit n within `within` of its support plane.
+template <class T, class ForEachPart>
+void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
+                         typename T::Scalar tolerance, ForEachPart&& for_each_part,
+                         SupportFeatureT<typename T::Scalar>& out) {
+  using S = typename T::Scalar;
+  const Vec3T<S> n = d.normalized();
+  auto gather = [&](S, S within, Vec3T<S>* near) {
+    auto parts = [&](auto&& add) { for_each_part(n, within, add); };
+    return sum_feature_points<S>(parts, n, near);
+  };
+  point_set_feature(shape, n, tolerance, gather, out);
+}
+
 }  // namespace detail
 
 /// A Shape of one core (a polytope or a box paired with a sum, which runs on Shapes) takes that
@@ -633,18 +643,14 @@ inline void support_feature(const Shape& shape, const Vec3& d, double tolerance,
                [&](const auto& c) { support_feature_of(c, d, tolerance, out); });
     return;
   }
-  const Vec3 n = d.normalized();
-  auto gather = [&](double, double within, Vec3* near) {
-    auto for_each_part = [&](auto&& add) {
-      for (const Core& core : shape.cores()) {
-        SupportFeatureT<double> f;
-        visit_core(core, [&](const auto& c) { support_feature_of(c, n, within, f); });
-        add(f);
-      }
-    };
-    return detail::sum_feature_points<double>(for_each_part, n, near);
+  auto for_each_core = [&](const Vec3& n, double within, auto&& add) {
+    for (const Core& core : shape.cores()) {
+      SupportFeatureT<double> f;
+      visit_core(core, [&](const auto& c) { support_feature_of(c, n, within, f); });
+      add(f);
+    }
   };
-  detail::point_set_feature(shape, n, tolerance, gather, out);
+  detail::sum_support_feature(shape, d, tolerance, for_each_core, out);
 }
 
 /// A sum's feature from its two parts' (as a Shape's above).
@@ -652,18 +658,14 @@ template <ConvexShape A, ConvexShape B>
 void support_feature(const MinkowskiSum<A, B>& sum, const Vec3T<typename A::Scalar>& d,
                      typename A::Scalar tolerance, SupportFeatureT<typename A::Scalar>& out) {
   using S = typename A::Scalar;
-  const Vec3T<S> n = d.normalized();
-  auto gather = [&](S, S within, Vec3T<S>* near) {
-    auto for_each_part = [&](auto&& add) {
-      SupportFeatureT<S> f;
-      support_feature_of(sum.a, n, within, f);
-      add(f);
-      support_feature_of(sum.b, n, within, f);
-      add(f);
-    };
-    return detail::sum_feature_points<S>(for_each_part, n, near);
+  auto both_parts = [&](const Vec3T<S>& n, S within, auto&& add) {
+    SupportFeatureT<S> f;
+    support_feature_of(sum.a, n, within, f);
+    add(f);
+    support_feature_of(sum.b, n, within, f);
+    add(f);
   };
-  detail::point_set_feature(sum, n, tolerance, gather, out);
+  detail::sum_support_feature(sum, d, tolerance, both_parts, out);
 }
 
 }  // namespace mink

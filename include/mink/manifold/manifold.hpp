@@ -198,14 +198,13 @@ void add_deepest_pair(const ContactResultT<S>& c, const Vec3T<S>& n, S margin, S
 /// the features are clipped: it computes in that frame anyway, and its points taken to the world
 /// and back lost the world's rounding (1e-8 at 8e7 from the origin, 6e-9 of a unit pair's size),
 /// which set the contact's pair apart from the same clipped point by more than the reduction's
-/// 1e-9 of the size, and kept both.
+/// 1e-9 of the size, and kept both. The input must have been checked (query_input_error()).
 template <ConvexShape A, ConvexShape B>
 void manifold_from_contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
                            const PoseT<typename A::Scalar>& pose_b,
                            const ManifoldOptionsT<typename A::Scalar>& options,
                            ManifoldResultT<typename A::Scalar>& result) {
   using S = typename A::Scalar;
-  if ((result.error = query_input_error(a, pose_a, b, pose_b))) return;
   const PoseT<S> relative = pose_a.relative(pose_b);
   const ContactResultT<S> c = contact(a, PoseT<S>::identity(), b, relative, options.tolerances);
   result.status = c.status;
@@ -283,9 +282,10 @@ manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     result.error = "manifold margin and feature_tolerance must be >= 0";
     return result;
   }
+  // Checked here in the world frame, once for every path: contact() below sees only the
+  // relative pose, whose error message would name the wrong pose.
+  if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
-    // contact() checks the input on the general path; the box path must check it itself.
-    if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
     if (detail::box_manifold(a, pose_a, b, pose_b, options, result)) return result;
   }
   detail::manifold_from_contact(a, pose_a, b, pose_b, options, result);

@@ -20,6 +20,15 @@ Vec3T<S> orthogonal(const Vec3T<S>& e) {
   return e.cross(axis);
 }
 
+/// Unit vectors u, v with (u, v, n) right-handed and orthonormal, for a unit n.
+template <class S>
+void plane_basis(const Vec3T<S>& n, Vec3T<S>& u, Vec3T<S>& v) {
+  u = std::abs(n.x()) > std::abs(n.z()) ? Vec3T<S>(-n.y(), n.x(), S(0))
+                                        : Vec3T<S>(S(0), -n.z(), n.y());
+  u.normalize();
+  v = n.cross(u);
+}
+
 /// Makes n a unit vector exactly orthogonal to the directions e1 and e2 (a zero one is no
 /// constraint), on n's side. Used where n is known to be orthogonal to them but carries rounding
 /// along them: the difference of two closest points some L from the origin that are only

@@ -419,8 +419,8 @@ std::optional<AxialDepth<typename A::Scalar>> tilted_axial_depth(
     const TolerancesT<typename A::Scalar>& tol) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  const V e0 = unit_of(V(orthogonal(w).cross(w)));
-  const V f0 = w.cross(e0);
+  V e0, f0;
+  plane_basis(w, e0, f0);
   std::optional<AxialDepth<S>> best;  // the least depth seen, on the plane at best_phi
   S best_phi = S(0);
   int iterations = 0, planes = 0;

@@ -194,11 +194,10 @@ TEST(CurvedBesideFeature, DepthAndNormalAreExactInBothOrders) {
 }
 
 TEST(CurvedBesideFeature, TouchingPointsAreTheContact) {
-  // Touching to 1e-13 of the size: no Newton step runs (the normal is ill-conditioned there),
-  // and GJK's closest points, combinations of support points from several directions, lay a
-  // chord of the ellipsoid off the contact (4e-7 of the size, probe 52's W-face). Both points
-  // must be e; beside a face the normal is its normal (at an edge or a corner any normal of its
-  // cone is right).
+  // Touching to 1e-13 of the size: GJK's closest points, combinations of support points from
+  // several directions, lay a chord of the ellipsoid off the contact (4e-7 of the size, probe
+  // 52's W-face). Both points must be e; beside a face the normal is its normal (at an edge or a
+  // corner any normal of its cone is right: there the minimum is flat to the gap).
   const int count = oracle::sweep_count(300, 100);
   for (int i = 0; i < count; ++i) {
     const Scene s = make_scene(29100 + i, Placement::Touching);
