@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "mink/mink.hpp"
@@ -22,6 +23,17 @@ inline constexpr double kDistanceTolerance = 1e-10;
 /// intersect answer is accepted there, since mink counts touching within 1e-12 * size as
 /// intersecting and rounding of the inputs alone moves the gap by about 1e-16 * size.
 inline constexpr double kTouchingBand = 1e-9;
+
+/// The angle between two directions (radians; accurate near 0, where acos is not).
+inline double angle(const mink::Vec3& u, const mink::Vec3& v) {
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+/// The rounding of world coordinates of a scene placed up to `translation` from the origin:
+/// 16 eps times its largest coordinate (a scene 1e3 away is built to 1e3 eps).
+inline double world_rounding(const mink::Vec3& translation) {
+  return 16 * std::numeric_limits<double>::epsilon() * translation.cwiseAbs().maxCoeff();
+}
 
 /// Largest errors of a sweep, printed at its end.
 struct Worst {

@@ -20,6 +20,7 @@
 #include <string>
 
 #include "mink/mink.hpp"
+#include "oracle/check.hpp"
 #include "oracle/curved.hpp"
 #include "oracle/random.hpp"
 
@@ -113,10 +114,6 @@ Scene make_scene(std::uint64_t seed, Placement placement) {
   return s;
 }
 
-double angle(const Vec3& u, const Vec3& v) {
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
-
 // One argument order: `flip` puts the curved shape first, which turns the normal round.
 template <class Result>
 void expect_exact(const Scene& s, const Result& r, bool flip, double far_rounding) {
@@ -136,15 +133,13 @@ void expect_exact(const Scene& s, const Result& r, bool flip, double far_roundin
     }
   }
   // The normal's own bound: it turns the points by its angle times their lever, the size.
-  EXPECT_LE(angle(r.normal, normal), 1e-9) << s.note << order;
+  EXPECT_LE(oracle::angle(r.normal, normal), 1e-9) << s.note << order;
   EXPECT_LE((r.point_a - expected_a).norm(), tolerance) << s.note << order;
   EXPECT_LE((r.point_b - expected_b).norm(), tolerance) << s.note << order;
 }
 
 double far_rounding(const Scene& s) {
-  // Coordinates near 1e3 round to 1e3 eps: the scene itself is built to that.
-  return 16 * std::numeric_limits<double>::epsilon() *
-         s.pose_polyhedral.translation.cwiseAbs().maxCoeff();
+  return oracle::world_rounding(s.pose_polyhedral.translation);
 }
 
 TEST(CurvedBesideFeature, DistanceAndNormalAreExactInBothOrders) {
@@ -212,7 +207,8 @@ TEST(CurvedBesideFeature, TouchingPointsAreTheContact) {
       EXPECT_LE((r.point_a - s.contact).norm(), tolerance) << s.note << order;
       EXPECT_LE((r.point_b - s.contact).norm(), tolerance) << s.note << order;
       if (s.feature == Feature::Face) {
-        EXPECT_LE(angle(r.normal, flip ? Vec3(-s.normal) : s.normal), 1e-9) << s.note << order;
+        EXPECT_LE(oracle::angle(r.normal, flip ? Vec3(-s.normal) : s.normal), 1e-9)
+            << s.note << order;
       }
     }
     if (::testing::Test::HasFailure()) break;

@@ -20,6 +20,7 @@
 #include <string>
 
 #include "mink/mink.hpp"
+#include "oracle/check.hpp"
 #include "oracle/random.hpp"
 
 namespace {
@@ -116,13 +117,8 @@ Scene rim_scene(std::uint64_t seed) {
   return s;
 }
 
-double angle(const Vec3& u, const Vec3& v) {
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
-
 double far_rounding(const Scene& s) {
-  return 16 * std::numeric_limits<double>::epsilon() *
-         s.pose_solid.translation.cwiseAbs().maxCoeff();
+  return oracle::world_rounding(s.pose_solid.translation);
 }
 
 // One argument order: `flip` puts the ellipsoid first, which turns the normal round. Touching
@@ -139,7 +135,7 @@ void expect_exact(const Scene& s, const Result& r, bool flip, bool touching) {
     ASSERT_EQ(r.status, mink::Status::Separated) << s.note << order;
     EXPECT_NEAR(r.distance, s.gap, tolerance) << s.note << order;
   }
-  EXPECT_LE(angle(r.normal, flip ? Vec3(-s.normal) : s.normal), 1e-9) << s.note << order;
+  EXPECT_LE(oracle::angle(r.normal, flip ? Vec3(-s.normal) : s.normal), 1e-9) << s.note << order;
   EXPECT_LE((r.point_a - (flip ? on_ellipsoid : on_solid)).norm(), tolerance) << s.note << order;
   EXPECT_LE((r.point_b - (flip ? on_solid : on_ellipsoid)).norm(), tolerance) << s.note << order;
 }
