@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "mink/gjk/corner_solid.hpp"
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/support_descent.hpp"
 #include "mink/gjk/support_newton.hpp"
@@ -170,6 +171,14 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
         out.lower = std::max(out.lower, -least.value);
         out.on_a = least.vertex.a;
         out.on_b = least.vertex.b;
+        share_residual(out.on_a, out.on_b, out.normal, -gjk.upper);
+      }
+      // A corner against a solid: the corner and its nearest point on the solid, exact where
+      // the steps stop beside a kink (gjk/corner_solid.hpp).
+      if (const auto pair = corner_solid_pair(diff, out.normal, gjk.upper, touch, iterations)) {
+        out.normal = pair->normal;
+        out.on_a = pair->on_a;
+        out.on_b = pair->on_b;
         share_residual(out.on_a, out.on_b, out.normal, -gjk.upper);
       }
     }

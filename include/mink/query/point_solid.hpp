@@ -1,16 +1,17 @@
 /// @file point_solid.hpp
-/// A point core (Sphere, Point, and their Rounded versions) against a box, cylinder, ellipsoid or
-/// small polytope core (Box, Cylinder, Ellipsoid, Polytope, and their Rounded versions) in closed
-/// form: the solid's point nearest to the point core is the point clamped to the solid, and a point
-/// inside leaves through the nearest part of the surface (a box's nearest face; a cylinder's side
-/// or nearer cap; a polytope's nearest face plane). An ellipsoid's nearest point, inside or out, is
-/// a one-dimensional root, found to rounding by Newton's method. intersect(), distance() and
-/// contact() take this path for such pairs, in either order: exact to rounding, 0 iterations, and
-/// for a sphere inside the solid no EPA (whose answer for a sphere near a cylinder's axis, or deep
-/// in a nearly round ellipsoid, where every direction is nearly as good, could only be
-/// bracketed). A polytope takes it once it has its
-/// face planes (PolytopeT::face_planes()), and leaves to GJK the few answers the planes cannot
-/// give exactly.
+/// A point core (Sphere, Point, and their Rounded versions) against a box, cylinder, cone,
+/// ellipsoid or small polytope core (Box, Cylinder, Cone, Ellipsoid, Polytope, and their Rounded
+/// versions) in closed form: the solid's point nearest to the point core is the point clamped to
+/// the solid, and a point inside leaves through the nearest part of the surface (a box's nearest
+/// face; a cylinder's side or nearer cap; a polytope's nearest face plane; a point inside a cone is
+/// left to GJK and EPA). An ellipsoid's nearest point, inside or out, is a one-dimensional root,
+/// found to rounding by Newton's method. intersect(), distance() and contact() take this path for
+/// such pairs, in either order: exact to rounding, 0 iterations, and for a sphere inside the solid
+/// no EPA (whose answer for a sphere near a cylinder's axis, or deep in a nearly round ellipsoid,
+/// where every direction is nearly as good, could only be bracketed). A polytope takes it once it
+/// has its face planes (PolytopeT::face_planes()), and leaves to GJK the few answers the planes
+/// cannot give exactly. The nearest point of a solid to a corner of the other core also places
+/// the witness points of separated cores (gjk/corner_solid.hpp).
 #pragma once
 
 #include <algorithm>
@@ -23,6 +24,7 @@
 #include "mink/math/lanes.hpp"
 #include "mink/math/pose.hpp"
 #include "mink/query/box_box.hpp"
+#include "mink/shapes/cone.hpp"
 #include "mink/shapes/cylinder.hpp"
 #include "mink/shapes/ellipsoid.hpp"
 #include "mink/shapes/support_scan.hpp"
@@ -115,6 +117,19 @@ struct SolidCore<BoxT<S>> : std::true_type, GapOfClamp<SolidCore<BoxT<S>>> {
   }
 };
 
+/// p's distance from the local z axis and its radial direction (ux, uy) (0 and +x on the axis),
+/// for the solids of revolution below.
+template <class S>
+S axis_distance(const Vec3T<S>& p, S& ux, S& uy) {
+  if (!planar_unit(p.x(), p.y(), ux, uy)) {
+    ux = S(1);
+    uy = S(0);
+    return S(0);
+  }
+  // The distance along the unit direction: no square of a tiny or huge coordinate.
+  return std::max(S(0), ux * p.x() + uy * p.y());
+}
+
 /// A cylinder (axis z): p's distance from the axis and from the caps' planes, each clamped, in
 /// the plane through the axis and p, where the cylinder is a rectangle. Inside, out through the
 /// side or the nearer cap, whichever is nearer (the side on a tie). Ties: side and cap equally
@@ -124,20 +139,9 @@ template <class S>
 struct SolidCore<CylinderT<S>> : std::true_type, GapOfClamp<SolidCore<CylinderT<S>>> {
   using Core = CylinderT<S>;
   static const Core* core(const CylinderT<S>& c) { return &c; }
-
-  /// p's radial direction (ux, uy) and distance from the axis (0 and +x on the axis).
-  static S radial(const Vec3T<S>& p, S& ux, S& uy) {
-    if (!planar_unit(p.x(), p.y(), ux, uy)) {
-      ux = S(1);
-      uy = S(0);
-      return S(0);
-    }
-    // The distance along the unit direction: no square of a tiny or huge coordinate.
-    return std::max(S(0), ux * p.x() + uy * p.y());
-  }
   static Vec3T<S> clamp(const Core& c, const Vec3T<S>& p) {
     S ux, uy;
-    const S rho = radial(p, ux, uy);
+    const S rho = axis_distance(p, ux, uy);
     const S z = std::clamp(p.z(), -c.half_height, c.half_height);
     if (rho <= c.radius) return {p.x(), p.y(), z};
     return {ux * c.radius, uy * c.radius, z};
@@ -147,7 +151,7 @@ struct SolidCore<CylinderT<S>> : std::true_type, GapOfClamp<SolidCore<CylinderT<
     out.p = p;
     out.tie = false;
     S ux, uy;
-    const S rho = radial(p, ux, uy);
+    const S rho = axis_distance(p, ux, uy);
     const S beyond_side = rho - c.radius, beyond_cap = std::abs(p.z()) - c.half_height;
     const S side_z = std::clamp(p.z(), -c.half_height, c.half_height);
     const S cap_sign = sign_nonneg(p.z());
@@ -176,6 +180,68 @@ struct SolidCore<CylinderT<S>> : std::true_type, GapOfClamp<SolidCore<CylinderT<
       out.on_solid = Vec3T<S>(p.x(), p.y(), cap_sign * c.half_height);
       out.signed_distance = -below_cap;
     }
+    return out;
+  }
+};
+
+/// A cone (axis z, apex at +h, base disc of radius r at -h), for points outside it: in the plane
+/// through the axis and p, where the cone is a triangle, the nearest point is p's foot on the base
+/// when p lies below the base disc, else its foot on the slant from the apex to the rim, clamped
+/// to that segment (at the apex or the rim when it falls beyond an end). Points inside: nothing
+/// (GJK and EPA answer). Nothing for a flat or needle cone (r or h 0), which GJK handles as a disc
+/// or a segment.
+template <class S>
+struct SolidCore<ConeT<S>> : std::true_type, GapOfClamp<SolidCore<ConeT<S>>> {
+  using Core = ConeT<S>;
+  static const Core* core(const ConeT<S>& c) {
+    return c.radius > S(0) && c.half_height > S(0) ? &c : nullptr;
+  }
+  static bool inside(const Core& c, S rho, S z) {
+    return z >= -c.half_height && S(2) * c.half_height * rho <= c.radius * (c.half_height - z);
+  }
+  /// The nearest point in the plane through the axis, as (distance from the axis, z), for a p
+  /// outside the cone at (rho, z).
+  static void nearest_in_section(const Core& c, S rho, S z, S& rho_near, S& z_near) {
+    const S r = c.radius, h = c.half_height;
+    if (z < -h && rho <= r) {
+      rho_near = rho;
+      z_near = -h;
+      return;
+    }
+    // The slant from the apex (0, h) to the rim (r, -h), scaled to at most 1 so that its squared
+    // length cannot overflow: t = (p - apex) . slant / |slant|^2 in [0, 1].
+    const S scale = std::max(r, S(2) * h);
+    const S sr = r / scale, sz = S(-2) * h / scale;
+    const S t = std::clamp((rho * sr + (z - h) * sz) / ((sr * sr + sz * sz) * scale), S(0), S(1));
+    rho_near = t == S(1) ? r : t * r;
+    z_near = t == S(1) ? -h : h - S(2) * h * t;
+  }
+  static Vec3T<S> clamp(const Core& c, const Vec3T<S>& p) {
+    S ux, uy;
+    const S rho = axis_distance(p, ux, uy);
+    if (inside(c, rho, p.z())) return p;
+    S rho_near, z_near;
+    nearest_in_section(c, rho, p.z(), rho_near, z_near);
+    return {ux * rho_near, uy * rho_near, z_near};
+  }
+  static std::optional<PointSolidLocal<S>> local(const Core& c, const Vec3T<S>& p) {
+    S ux, uy;
+    const S rho = axis_distance(p, ux, uy);
+    if (inside(c, rho, p.z())) return std::nullopt;
+    S rho_near, z_near;
+    nearest_in_section(c, rho, p.z(), rho_near, z_near);
+    PointSolidLocal<S> out;
+    out.p = p;
+    out.tie = false;
+    out.on_solid = Vec3T<S>(ux * rho_near, uy * rho_near, z_near);
+    // The gap from the section's differences, which carry no cancellation of p's coordinates
+    // against the nearest point's.
+    const S radial_gap = rho - rho_near;
+    const Vec3T<S> gap(ux * radial_gap, uy * radial_gap, p.z() - z_near);
+    const S gap_sq = gap.squaredNorm();
+    out.signed_distance = length_of(gap, gap_sq);
+    if (!(out.signed_distance > S(0)) || !is_finite(out.on_solid)) return std::nullopt;
+    out.out_of_solid = unit_of(gap, gap_sq, out.signed_distance);
     return out;
   }
 };
