@@ -83,8 +83,8 @@ struct CornerSolidPair {
 
 /// `pair`, unless h, the support function of A - B, is higher along its normal than along
 /// `normal` beyond rounding: the pair's direction is rounded when its points are a tiny gap apart
-/// (a corner 1e-9 of the size from a cone's slant turned the slant's exact normal by 1e-7 rad, and
-/// h by 5e-8 of the size). Two support calls, counted in `iterations`.
+/// (a triangle's corner a tiny gap from a cone's slant turned the slant's exact normal by 3e-7 rad,
+/// and h by 5e-8 of the size). Two support calls, counted in `iterations`.
 template <ConvexShape A, ConvexShape B>
 std::optional<CornerSolidPair<typename A::Scalar>> no_higher(
     const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& normal,
