@@ -3,8 +3,8 @@
 /// ellipsoid or small polytope core (Box, Cylinder, Cone, Ellipsoid, Polytope, and their Rounded
 /// versions) in closed form: the solid's point nearest to the point core is the point clamped to
 /// the solid, and a point inside leaves through the nearest part of the surface (a box's nearest
-/// face; a cylinder's side or nearer cap; a polytope's nearest face plane; a point inside a cone is
-/// left to GJK and EPA). An ellipsoid's nearest point, inside or out, is a one-dimensional root,
+/// face; a cylinder's side or nearer cap; a cone's base or slant; a polytope's nearest face
+/// plane). An ellipsoid's nearest point, inside or out, is a one-dimensional root,
 /// found to rounding by Newton's method. intersect(), distance() and contact() take this path for
 /// such pairs, in either order: exact to rounding, 0 iterations, and for a sphere inside the solid
 /// no EPA (whose answer for a sphere near a cylinder's axis, or deep in a nearly round ellipsoid,
@@ -184,12 +184,13 @@ struct SolidCore<CylinderT<S>> : std::true_type, GapOfClamp<SolidCore<CylinderT<
   }
 };
 
-/// A cone (axis z, apex at +h, base disc of radius r at -h), for points outside it: in the plane
-/// through the axis and p, where the cone is a triangle, the nearest point is p's foot on the base
-/// when p lies below the base disc, else its foot on the slant from the apex to the rim, clamped
-/// to that segment (at the apex or the rim when it falls beyond an end). Points inside: nothing
-/// (GJK and EPA answer). Nothing for a flat or needle cone (r or h 0), which GJK handles as a disc
-/// or a segment.
+/// A cone (axis z, apex at +h, base disc of radius r at -h): in the plane through the axis and p,
+/// where the cone is a triangle, the nearest point of a p outside is its foot on the base when it
+/// lies below the base disc, else its foot on the slant from the apex to the rim, clamped to that
+/// segment (at the apex or the rim when it falls beyond an end). A p inside leaves through the
+/// nearer of the base and the slant. Ties: base and slant equally near; p on the axis with the
+/// slant nearest (every radial direction: then +x). Nothing for a flat or needle cone (r or h 0),
+/// which GJK handles as a disc or a segment.
 template <class S>
 struct SolidCore<ConeT<S>> : std::true_type, GapOfClamp<SolidCore<ConeT<S>>> {
   using Core = ConeT<S>;
@@ -227,7 +228,7 @@ struct SolidCore<ConeT<S>> : std::true_type, GapOfClamp<SolidCore<ConeT<S>>> {
   static std::optional<PointSolidLocal<S>> local(const Core& c, const Vec3T<S>& p) {
     S ux, uy;
     const S rho = axis_distance(p, ux, uy);
-    if (inside(c, rho, p.z())) return std::nullopt;
+    if (inside(c, rho, p.z())) return local_inside(c, p, rho, ux, uy);
     S rho_near, z_near;
     nearest_in_section(c, rho, p.z(), rho_near, z_near);
     PointSolidLocal<S> out;
@@ -242,6 +243,33 @@ struct SolidCore<ConeT<S>> : std::true_type, GapOfClamp<SolidCore<ConeT<S>>> {
     out.signed_distance = length_of(gap, gap_sq);
     if (!(out.signed_distance > S(0)) || !is_finite(out.on_solid)) return std::nullopt;
     out.out_of_solid = unit_of(gap, gap_sq, out.signed_distance);
+    return out;
+  }
+  /// local() for a p inside, at (rho, z) with radial direction (ux, uy): out through the nearer of
+  /// the base and the slant. In the plane through the axis the cone is a triangle, and the foot
+  /// of an inner point on the nearest of its edges' lines lies on that edge; the slant on p's side
+  /// of the axis is the nearer of the two.
+  static std::optional<PointSolidLocal<S>> local_inside(const Core& c, const Vec3T<S>& p, S rho,
+                                                        S ux, S uy) {
+    const S r = c.radius, h = c.half_height;
+    const S length = std::hypot(r, S(2) * h);  // of the slant
+    const S below_base = p.z() + h;
+    const S below_slant = (r * (h - p.z()) - S(2) * h * rho) / length;
+    PointSolidLocal<S> out;
+    out.p = p;
+    out.tie = below_slant == below_base;
+    if (below_slant <= below_base) {
+      out.tie |= rho == S(0);  // on the axis: every radial direction
+      const S out_radial = S(2) * h / length;
+      out.out_of_solid = Vec3T<S>(out_radial * ux, out_radial * uy, r / length);
+      out.on_solid = p + below_slant * out.out_of_solid;
+      out.signed_distance = -below_slant;
+    } else {
+      out.out_of_solid = Vec3T<S>(S(0), S(0), S(-1));
+      out.on_solid = Vec3T<S>(p.x(), p.y(), -h);
+      out.signed_distance = -below_base;
+    }
+    if (!is_finite(out.on_solid) || !std::isfinite(out.signed_distance)) return std::nullopt;
     return out;
   }
 };

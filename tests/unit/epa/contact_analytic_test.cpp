@@ -1,16 +1,20 @@
 // contact() against closed-form penetration depths (tests/oracle/penetration.hpp): sphere-sphere,
 // sphere-box, box-sphere, sphere-cylinder, capsule-capsule and box-box (separating axes) in random
-// poses, mostly penetrating, with touching and separated cases mixed in. The depth must match to
+// poses, mostly penetrating, with touching and separated cases mixed in; sphere-cone against the
+// distance to the cone's triangle in the plane through its axis. The depth must match to
 // 1e-9 of the size (1e-7 for the cylinder, a curved core), the normal must be optimal
 // (h_{A-B}(normal) = depth) and, where it is unique, equal the oracle's; the points must be the
 // deepest points along the normal.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "mink/mink.hpp"
 #include "oracle/analytic.hpp"
 #include "oracle/contact_check.hpp"
+#include "oracle/curved.hpp"
 #include "oracle/penetration.hpp"
 #include "oracle/random.hpp"
 
@@ -208,6 +212,80 @@ TEST(ContactAnalytic, SphereCylinder) {
   EXPECT_GT(inside, n / 4);
   std::printf("[  worst   ] contact sphere-cylinder: normal %.3g, %d centres inside\n",
               worst_normal, inside);
+}
+
+/// Signed distance (negative inside) from q, in the frame of a cone of base radius r at z = -h
+/// and apex at z = h, to the cone, in long double: in the plane through the axis and q the cone
+/// is the triangle (0, h), (-r, -h), (r, -h), and the distance is the least over its three edges
+/// (as segments), negative when q is on the inner side of all three.
+Real cone_signed_distance(Real r, Real h, const V3& q) {
+  using P = Eigen::Matrix<Real, 2, 1>;
+  const P p(std::hypot(q.x(), q.y()), q.z());
+  const P corners[3] = {P(0, h), P(-r, -h), P(r, -h)};  // counter-clockwise
+  Real least = std::numeric_limits<Real>::infinity();
+  bool inside = true;
+  for (int i = 0; i < 3; ++i) {
+    const P& a = corners[i];
+    const P& b = corners[(i + 1) % 3];
+    const P ab = b - a, ap = p - a;
+    const Real t = std::clamp(ap.dot(ab) / ab.squaredNorm(), Real(0), Real(1));
+    least = std::min(least, (ap - t * ab).norm());
+    inside = inside && ab.x() * ap.y() - ab.y() * ap.x() >= 0;
+  }
+  return inside ? -least : least;
+}
+
+TEST(ContactAnalytic, SphereCone) {
+  // A closed form (query/point_solid.hpp) since stop 55, inside the cone or not, against the
+  // distance to the cone's triangle in the plane through its axis (cone_signed_distance(), long
+  // double); the normal's optimality and the points from the cone's support function in
+  // tests/oracle/curved.hpp. Half of the centres are inside the cone (half of those within 1e-3
+  // of its size of the axis, where every direction round the axis is nearly as good); the cone
+  // is A or B.
+  const std::uint64_t base = 555000;
+  const int n = oracle::sweep_count(200, 40);
+  oracle::DepthWorst worst("contact sphere-cone");
+  int inside = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const mink::Cone cone{rng.log_uniform(0.05, 2), rng.log_uniform(0.05, 2)};
+    const mink::Sphere sphere{rng.log_uniform(0.01, 1)};
+    const double size = std::hypot(cone.radius, cone.half_height) + sphere.radius;
+    const Pose pb = rng.pose(5);
+    // The centre in the cone's frame: inside it (its radius at height z is r (h - z) / 2h), or
+    // within the sphere's radius of its surface.
+    const bool in = rng.chance(0.5);
+    const double z = rng.uniform(-cone.half_height, cone.half_height);
+    const double radius_at_z = cone.radius * (cone.half_height - z) / (2 * cone.half_height);
+    const double rho =
+        in ? radius_at_z * (rng.chance(0.5) ? rng.uniform(0, 1e-3) : rng.uniform(0, 1))
+           : rng.uniform(0, radius_at_z + sphere.radius);
+    const double phi = rng.uniform(0, 2 * M_PI);
+    const double z_out = in ? z : z + rng.uniform(-sphere.radius, sphere.radius);
+    const Vec3 local(rho * std::cos(phi), rho * std::sin(phi), z_out);
+    const Pose pa = Pose::from(pb.apply(local), rng.rotation());
+    if (in) ++inside;
+    const oracle::CurvedShape oc{oracle::CurvedKind::Cone, cone.radius, cone.half_height,
+                                 V3::Zero()};
+    const oracle::RigidPose opb{widen(pb.rotation), widen(pb.translation)};
+    const V3 centre_in_cone = opb.rotation.transpose() * (widen(pa.translation) - opb.translation);
+    const Real expected =
+        Real(sphere.radius) - cone_signed_distance(cone.radius, cone.half_height, centre_in_cone);
+    const bool swap = i % 2 == 1;
+    auto got = swap ? mink::contact(cone, pb, sphere, pa) : mink::contact(sphere, pa, cone, pb);
+    EXPECT_EQ(got.iterations, 0) << "the closed form, no GJK or EPA";
+    if (swap) {  // as the sphere first: B moves along the normal
+      std::swap(got.point_a, got.point_b);
+      got.normal = -got.normal;
+    }
+    oracle::expect_contact_matches(
+        expected, oracle::sphere_support(widen(pa.translation), sphere.radius),
+        [&](const V3& u) { return oracle::world_support(oc, opb, u); }, got, size,
+        pb.translation.norm(), worst, oracle::kDepthTolerance, false);
+  }
+  EXPECT_GT(inside, n / 4);
 }
 
 TEST(ContactAnalytic, CapsuleCapsule) {
