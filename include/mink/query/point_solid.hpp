@@ -197,8 +197,17 @@ struct SolidCore<ConeT<S>> : std::true_type, GapOfClamp<SolidCore<ConeT<S>>> {
   static const Core* core(const ConeT<S>& c) {
     return c.radius > S(0) && c.half_height > S(0) ? &c : nullptr;
   }
+  /// r and 2h over the larger of them: products of a coordinate with these cannot overflow where
+  /// r (h - z) and 2h rho would (a cone and a point at 1e200 counted as inside).
+  static void slant_factors(const Core& c, S& sr, S& s2h) {
+    const S scale = std::max(c.radius, S(2) * c.half_height);
+    sr = c.radius / scale;
+    s2h = S(2) * c.half_height / scale;
+  }
   static bool inside(const Core& c, S rho, S z) {
-    return z >= -c.half_height && S(2) * c.half_height * rho <= c.radius * (c.half_height - z);
+    S sr, s2h;
+    slant_factors(c, sr, s2h);
+    return z >= -c.half_height && s2h * rho <= sr * (c.half_height - z);
   }
   /// The nearest point in the plane through the axis, as (distance from the axis, z), for a p
   /// outside the cone at (rho, z).
@@ -209,11 +218,13 @@ struct SolidCore<ConeT<S>> : std::true_type, GapOfClamp<SolidCore<ConeT<S>>> {
       z_near = -h;
       return;
     }
-    // The slant from the apex (0, h) to the rim (r, -h), scaled to at most 1 so that its squared
-    // length cannot overflow: t = (p - apex) . slant / |slant|^2 in [0, 1].
+    // The slant from the apex (0, h) to the rim (r, -h), scaled to at most 1 (slant_factors())
+    // so that its squared length cannot overflow: t = (p - apex) . slant / |slant|^2 in [0, 1].
+    S sr, s2h;
+    slant_factors(c, sr, s2h);
     const S scale = std::max(r, S(2) * h);
-    const S sr = r / scale, sz = S(-2) * h / scale;
-    const S t = std::clamp((rho * sr + (z - h) * sz) / ((sr * sr + sz * sz) * scale), S(0), S(1));
+    const S t =
+        std::clamp((rho * sr - (z - h) * s2h) / ((sr * sr + s2h * s2h) * scale), S(0), S(1));
     rho_near = t == S(1) ? r : t * r;
     z_near = t == S(1) ? -h : h - S(2) * h * t;
   }
@@ -251,17 +262,19 @@ struct SolidCore<ConeT<S>> : std::true_type, GapOfClamp<SolidCore<ConeT<S>>> {
   /// of the axis is the nearer of the two.
   static std::optional<PointSolidLocal<S>> local_inside(const Core& c, const Vec3T<S>& p, S rho,
                                                         S ux, S uy) {
-    const S r = c.radius, h = c.half_height;
-    const S length = std::hypot(r, S(2) * h);  // of the slant
+    const S h = c.half_height;
+    S sr, s2h;
+    slant_factors(c, sr, s2h);
+    const S length = std::hypot(sr, s2h);  // of the slant, scaled as sr and s2h
     const S below_base = p.z() + h;
-    const S below_slant = (r * (h - p.z()) - S(2) * h * rho) / length;
+    const S below_slant = (sr * (h - p.z()) - s2h * rho) / length;
     PointSolidLocal<S> out;
     out.p = p;
     out.tie = below_slant == below_base;
     if (below_slant <= below_base) {
       out.tie |= rho == S(0);  // on the axis: every radial direction
-      const S out_radial = S(2) * h / length;
-      out.out_of_solid = Vec3T<S>(out_radial * ux, out_radial * uy, r / length);
+      const S out_radial = s2h / length;
+      out.out_of_solid = Vec3T<S>(out_radial * ux, out_radial * uy, sr / length);
       out.on_solid = p + below_slant * out.out_of_solid;
       out.signed_distance = -below_slant;
     } else {

@@ -256,4 +256,24 @@ TEST(CornerSolid, SphereAgainstAConeInClosedForm) {
   }
 }
 
+// A cone and spheres at 1e200, where r (h - z) and 2h rho overflow: the closed form works with
+// their ratios to the cone's size. One sphere beyond the rim, one inside above the base.
+TEST(CornerSolid, SphereAgainstAConeAt1e200) {
+  const double scale = 1e200;
+  const mink::Cone cone{scale, scale};
+  const mink::Sphere outside_sphere{0.1 * scale}, inside_sphere{0.2 * scale};
+  // In units of the scale: the centre (3, 0, 0) is nearest the rim (1, 0, -1), sqrt(5) away.
+  const auto apart = mink::distance(cone, Pose::identity(), outside_sphere,
+                                    Pose::from(Vec3(3 * scale, 0, 0), mink::Quat(1, 0, 0, 0)));
+  ASSERT_EQ(apart.status, mink::Status::Separated) << apart.error;
+  EXPECT_NEAR(apart.distance / scale, std::sqrt(5.0) - 0.1, 1e-14);
+  EXPECT_LE(oracle::angle(apart.normal, Vec3(2, 0, 1).normalized()), 1e-14);
+  // The centre (0, 0, -0.5) is 0.5 above the base and 1.5 / sqrt(5) inside the slant.
+  const auto deep = mink::contact(cone, Pose::identity(), inside_sphere,
+                                  Pose::from(Vec3(0, 0, -0.5 * scale), mink::Quat(1, 0, 0, 0)));
+  ASSERT_EQ(deep.status, mink::Status::Intersecting) << deep.error;
+  EXPECT_NEAR(deep.depth / scale, 0.7, 1e-14);
+  EXPECT_LE(oracle::angle(deep.normal, Vec3(0, 0, -1)), 1e-14);
+}
+
 }  // namespace
