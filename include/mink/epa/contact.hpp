@@ -144,9 +144,8 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     }
   }
   if constexpr (detail::kPointSolid<A, B>) {
-    // A sphere or point against a box, cylinder, ellipsoid or small polytope, inside it or not:
-    // closed form,
-    // no GJK or EPA.
+    // A sphere or point against a box, cylinder, cone, ellipsoid or small polytope, inside it or
+    // not: closed form, no GJK or EPA.
     if (const auto local = detail::point_solid_local(a, pose_a, b, pose_b)) {
       if (!(std::abs(local->signed_distance) <= std::numeric_limits<S>::max())) {
         result.error = detail::kOverflowError;

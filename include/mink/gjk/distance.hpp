@@ -140,7 +140,7 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     return result;
   }
   if constexpr (detail::kPointSolid<A, B>) {
-    // A sphere or point against a box, cylinder, ellipsoid or small polytope: closed form, no
+    // A sphere or point against a box, cylinder, cone, ellipsoid or small polytope: closed form, no
     // iteration.
     if (const auto local = detail::point_solid_local(a, pose_a, b, pose_b)) {
       const S radius_a = a.core_radius(), radius_b = b.core_radius();

@@ -85,7 +85,7 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     return result;
   }
   if constexpr (detail::kPointSolid<A, B>) {
-    // A sphere or point against a box, cylinder, ellipsoid or small polytope: closed form, no
+    // A sphere or point against a box, cylinder, cone, ellipsoid or small polytope: closed form, no
     // iteration.
     if (const auto gap = detail::point_solid_gap(a, pose_a, b, pose_b, reach)) {
       detail::intersect_from_core_gap(*gap, reach, result);
