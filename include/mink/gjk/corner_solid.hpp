@@ -15,6 +15,7 @@
 #include <variant>
 
 #include "mink/gjk/gjk.hpp"
+#include "mink/gjk/support_descent.hpp"
 #include "mink/gjk/support_newton.hpp"
 #include "mink/math/orthogonal.hpp"
 #include "mink/query/point_solid.hpp"
@@ -82,47 +83,49 @@ struct CornerSolidPair {
 };
 
 /// `pair`, unless h, the support function of A - B, is higher along its normal than along
-/// `normal` beyond rounding: the pair's direction is rounded when its points are a tiny gap apart
-/// (a triangle's corner a tiny gap from a cone's slant turned the slant's exact normal by 3e-7 rad,
-/// and h by 5e-8 of the size). Two support calls, counted in `iterations`.
+/// `at_normal`'s beyond rounding: the pair's direction is rounded when its points are a tiny gap
+/// apart (a triangle's corner a tiny gap from a cone's slant turned the slant's exact normal by
+/// 3e-7 rad, and h by 5e-8 of the size). One support call, counted in `iterations`.
 template <ConvexShape A, ConvexShape B>
 std::optional<CornerSolidPair<typename A::Scalar>> no_higher(
-    const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& normal,
+    const CoreDifference<A, B>& diff, const SupportMinimum<typename A::Scalar>& at_normal,
     std::optional<CornerSolidPair<typename A::Scalar>> pair, int& iterations) {
   using S = typename A::Scalar;
-  SimplexVertexT<S> along_normal, along_pair;
-  diff.support(normal, along_normal);
+  SimplexVertexT<S> along_pair;
   diff.support(pair->normal, along_pair);
-  iterations += 2;
-  const S h_normal = normal.dot(along_normal.w), h_pair = pair->normal.dot(along_pair.w);
-  if (!(h_pair <= h_normal + support_rounding(along_pair))) return std::nullopt;
+  ++iterations;
+  const S h_pair = pair->normal.dot(along_pair.w);
+  if (!(h_pair <= at_normal.value + support_rounding(along_pair))) return std::nullopt;
   return pair;
 }
 
-/// The witness pair of separated cores from `normal` (unit, A's frame, from A to B, within 7e-4
-/// rad of the true one), when one core's support point along it is a corner (is_corner_along())
+/// The witness pair of separated cores from `at_normal`, Newton's answer (its unit normal, A's
+/// frame, from A to B, within 7e-4 rad of the true one, and h of A - B there, which no_higher()
+/// compares with), when one core's support point along the normal is a corner (is_corner_along())
 /// and the other core is a solid with a closed-form nearest point (with_solid()): the corner and
 /// its nearest point on the solid. Kept only when the pair's direction stays within half
-/// kCornerTurn of `normal` (so the corner is still the one support point along it, and the pair
-/// proves its own distance: the corner's support plane and the solid's, both normal to it, are
-/// that distance apart) and its distance is at most `upper` (GJK's upper bound on the core
-/// distance) plus `slack`, and h along it is no higher than along `normal` (no_higher()). Five
-/// support calls of a core for each side tried, two of A - B for a pair found, counted in
-/// `iterations`.
+/// kCornerTurn of the normal (so the corner is still the one support point along it, and the pair
+/// proves its own distance: the corner's support plane and the solid's, both normal to it, are that
+/// distance apart) and its distance is at most `upper` (GJK's upper bound on the core distance)
+/// plus `slack`, and h along it is no higher than along the normal (no_higher()). Five support
+/// calls of a core for each side tried, one of A - B for a pair found, counted in `iterations`.
 /// Nothing when no core is a solid, when neither point is a corner or the corner is not outside
 /// the solid, or when the pair is not kept.
 template <ConvexShape A, ConvexShape B>
 std::optional<CornerSolidPair<typename A::Scalar>> corner_solid_pair(
-    const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& normal,
+    const CoreDifference<A, B>& diff, const SupportMinimum<typename A::Scalar>& at_normal,
     typename A::Scalar upper, typename A::Scalar slack, int& iterations) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
+  const V& normal = at_normal.normal;
   std::optional<CornerSolidPair<S>> out;
   auto keep = [&](const V& on_a, const V& on_b, const V& n, S distance) {
     if (distance > S(0) && distance <= upper + slack && (n - normal).norm() <= S(0.5 * kCornerTurn))
       out = CornerSolidPair<S>{on_a, on_b, n, distance};
   };
-  // B a solid, A's support point a corner.
+  // B a solid, A's support point a corner. Taken again, not from `at_normal`: Newton's witness
+  // there may be a point placed from B's (smooth_side_witness()), which the turned support
+  // points would never equal.
   with_solid(diff.b, [&](auto solid_core, const auto& solid) {
     using Solid = typename decltype(solid_core)::type;
     const V corner = diff.a.support_core(normal);
@@ -133,7 +136,7 @@ std::optional<CornerSolidPair<typename A::Scalar>> corner_solid_pair(
       keep(corner, V(diff.rotation * local->on_solid + diff.translation),
            V(-(diff.rotation * local->out_of_solid)), local->signed_distance);
   });
-  if (out) return no_higher(diff, normal, std::move(out), iterations);
+  if (out) return no_higher(diff, at_normal, std::move(out), iterations);
   // A a solid, B's support point a corner.
   with_solid(diff.a, [&](auto solid_core, const auto& solid) {
     using Solid = typename decltype(solid_core)::type;
@@ -145,7 +148,7 @@ std::optional<CornerSolidPair<typename A::Scalar>> corner_solid_pair(
     if (const auto local = Solid::local(solid, corner))
       keep(local->on_solid, corner, local->out_of_solid, local->signed_distance);
   });
-  return out ? no_higher(diff, normal, std::move(out), iterations) : out;
+  return out ? no_higher(diff, at_normal, std::move(out), iterations) : out;
 }
 
 }  // namespace mink::detail

@@ -175,7 +175,7 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
       }
       // A corner against a solid: the corner and its nearest point on the solid, exact where
       // the steps stop beside a kink (gjk/corner_solid.hpp).
-      if (const auto pair = corner_solid_pair(diff, out.normal, gjk.upper, touch, iterations)) {
+      if (const auto pair = corner_solid_pair(diff, least, gjk.upper, touch, iterations)) {
         out.normal = pair->normal;
         out.on_a = pair->on_a;
         out.on_b = pair->on_b;

@@ -247,9 +247,11 @@ bool box_manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& 
                   const ManifoldOptionsT<typename A::Scalar>& options,
                   ManifoldResultT<typename A::Scalar>& result) {
   using S = typename A::Scalar;
-  const PoseT<S> rel = pose_a.relative(pose_b);
-  const S bound_a = a.bounding_radius(), bound_b = b.bounding_radius();
+  // The radii first: every tolerance below waits on them.
+  S bound_a, bound_b;
+  box_bounding_radii(a, b, bound_a, bound_b);
   const S size = bound_a + bound_b;
+  const PoseT<S> rel = pose_a.relative(pose_b);
   const auto axis = box_box_axis(BoxCore<A>::half_extents(a), BoxCore<B>::half_extents(b),
                                  rel.rotation, rel.translation, S(1e-9) * size);
   if (!(axis.overlap > options.tolerances.relative * size)) return false;

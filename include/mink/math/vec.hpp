@@ -87,6 +87,24 @@ template <class S>
   return length_of(v, S(v.squaredNorm()));
 }
 
+/// length_of(u) and length_of(v) with one packed square root, for two lengths a query needs at
+/// its start (two boxes' bounding radii): two scalar roots, each with its branch to the library
+/// for a negative argument, held up the box manifold by 3 % of its time.
+template <class S>
+[[gnu::always_inline]] inline void lengths_of(const Vec3T<S>& u, const Vec3T<S>& v, S& length_u,
+                                              S& length_v) {
+  const Eigen::Array<S, 2, 1> sq(u.squaredNorm(), v.squaredNorm());
+  if (sq.minCoeff() >= std::numeric_limits<S>::min() &&
+      sq.maxCoeff() <= std::numeric_limits<S>::max()) [[likely]] {
+    const Eigen::Array<S, 2, 1> root = sq.sqrt();
+    length_u = root[0];
+    length_v = root[1];
+  } else {
+    length_u = length_of(u, sq[0]);
+    length_v = length_of(v, sq[1]);
+  }
+}
+
 /// v / |v| for v != 0, given v_sq = v.squaredNorm() and length = length_of(v, v_sq). Where the
 /// square underflows or overflows, v is divided by its largest component first: 1 / |v| overflows
 /// below 1e-308, and a subnormal |v| carries too few digits for the plain quotient to be unit (so

@@ -36,6 +36,17 @@ struct BoxCore<Rounded<BoxT<S>>> : std::true_type {
   static const Vec3T<S>& half_extents(const Rounded<BoxT<S>>& b) { return b.shape.half_extents; }
 };
 
+/// bounding_radius() of two boxes (Box or Rounded<Box>) to the last bit, with one square root
+/// for both (lengths_of()).
+template <class A, class B>
+[[gnu::always_inline]] inline void box_bounding_radii(const A& a, const B& b,
+                                                      typename A::Scalar& bound_a,
+                                                      typename A::Scalar& bound_b) {
+  lengths_of(BoxCore<A>::half_extents(a), BoxCore<B>::half_extents(b), bound_a, bound_b);
+  bound_a += a.core_radius();
+  bound_b += b.core_radius();
+}
+
 /// The 15 separating axes of box A (half extents ha) and box B (half extents hb) whose pose in
 /// A's frame is (r, t): on each axis, the sum of the two radii minus the distance between the
 /// centres (> 0 overlapping, < 0 a gap). Face axes are unit; edge axes e_i x r.col(j) (index

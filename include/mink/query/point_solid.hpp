@@ -197,51 +197,54 @@ struct SolidCore<ConeT<S>> : std::true_type, GapOfClamp<SolidCore<ConeT<S>>> {
   static const Core* core(const ConeT<S>& c) {
     return c.radius > S(0) && c.half_height > S(0) ? &c : nullptr;
   }
-  /// r and 2h over the larger of them: products of a coordinate with these cannot overflow where
-  /// r (h - z) and 2h rho would (a cone and a point at 1e200 counted as inside).
-  static void slant_factors(const Core& c, S& sr, S& s2h) {
-    const S scale = std::max(c.radius, S(2) * c.half_height);
-    sr = c.radius / scale;
-    s2h = S(2) * c.half_height / scale;
-  }
-  static bool inside(const Core& c, S rho, S z) {
-    S sr, s2h;
-    slant_factors(c, sr, s2h);
-    return z >= -c.half_height && s2h * rho <= sr * (c.half_height - z);
+  /// The slant from the apex (0, h) to the rim (r, -h) in the plane through the axis, as r and
+  /// 2h over the larger of them, `scale`: products of a coordinate with these cannot overflow
+  /// where r (h - z) and 2h rho would (a cone and a point at 1e200 counted as inside). Taken once
+  /// a query: two divisions.
+  struct Slant {
+    S scale, sr, s2h;
+    explicit Slant(const Core& c)
+        : scale(std::max(c.radius, S(2) * c.half_height)),
+          sr(c.radius / scale),
+          s2h(S(2) * c.half_height / scale) {}
+  };
+  static bool inside(const Core& c, const Slant& slant, S rho, S z) {
+    return z >= -c.half_height && slant.s2h * rho <= slant.sr * (c.half_height - z);
   }
   /// The nearest point in the plane through the axis, as (distance from the axis, z), for a p
   /// outside the cone at (rho, z).
-  static void nearest_in_section(const Core& c, S rho, S z, S& rho_near, S& z_near) {
+  static void nearest_in_section(const Core& c, const Slant& slant, S rho, S z, S& rho_near,
+                                 S& z_near) {
     const S r = c.radius, h = c.half_height;
     if (z < -h && rho <= r) {
       rho_near = rho;
       z_near = -h;
       return;
     }
-    // The slant from the apex (0, h) to the rim (r, -h), scaled to at most 1 (slant_factors())
-    // so that its squared length cannot overflow: t = (p - apex) . slant / |slant|^2 in [0, 1].
-    S sr, s2h;
-    slant_factors(c, sr, s2h);
-    const S scale = std::max(r, S(2) * h);
+    // t = (p - apex) . slant / |slant|^2 in [0, 1], with the slant scaled so that its squared
+    // length cannot overflow.
+    const S sr = slant.sr, s2h = slant.s2h;
     const S t =
-        std::clamp((rho * sr - (z - h) * s2h) / ((sr * sr + s2h * s2h) * scale), S(0), S(1));
+        std::clamp((rho * sr - (z - h) * s2h) / ((sr * sr + s2h * s2h) * slant.scale), S(0), S(1));
     rho_near = t == S(1) ? r : t * r;
     z_near = t == S(1) ? -h : h - S(2) * h * t;
   }
   static Vec3T<S> clamp(const Core& c, const Vec3T<S>& p) {
     S ux, uy;
     const S rho = axis_distance(p, ux, uy);
-    if (inside(c, rho, p.z())) return p;
+    const Slant slant(c);
+    if (inside(c, slant, rho, p.z())) return p;
     S rho_near, z_near;
-    nearest_in_section(c, rho, p.z(), rho_near, z_near);
+    nearest_in_section(c, slant, rho, p.z(), rho_near, z_near);
     return {ux * rho_near, uy * rho_near, z_near};
   }
   static std::optional<PointSolidLocal<S>> local(const Core& c, const Vec3T<S>& p) {
     S ux, uy;
     const S rho = axis_distance(p, ux, uy);
-    if (inside(c, rho, p.z())) return local_inside(c, p, rho, ux, uy);
+    const Slant slant(c);
+    if (inside(c, slant, rho, p.z())) return local_inside(c, slant, p, rho, ux, uy);
     S rho_near, z_near;
-    nearest_in_section(c, rho, p.z(), rho_near, z_near);
+    nearest_in_section(c, slant, rho, p.z(), rho_near, z_near);
     PointSolidLocal<S> out;
     out.p = p;
     out.tie = false;
@@ -260,11 +263,9 @@ struct SolidCore<ConeT<S>> : std::true_type, GapOfClamp<SolidCore<ConeT<S>>> {
   /// the base and the slant. In the plane through the axis the cone is a triangle, and the foot
   /// of an inner point on the nearest of its edges' lines lies on that edge; the slant on p's side
   /// of the axis is the nearer of the two.
-  static std::optional<PointSolidLocal<S>> local_inside(const Core& c, const Vec3T<S>& p, S rho,
-                                                        S ux, S uy) {
-    const S h = c.half_height;
-    S sr, s2h;
-    slant_factors(c, sr, s2h);
+  static std::optional<PointSolidLocal<S>> local_inside(const Core& c, const Slant& slant,
+                                                        const Vec3T<S>& p, S rho, S ux, S uy) {
+    const S h = c.half_height, sr = slant.sr, s2h = slant.s2h;
     const S length = std::hypot(sr, s2h);  // of the slant, scaled as sr and s2h
     const S below_base = p.z() + h;
     const S below_slant = (sr * (h - p.z()) - s2h * rho) / length;
