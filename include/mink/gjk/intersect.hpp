@@ -73,7 +73,9 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   IntersectResultT<S> result;
   if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
   const S radius = a.core_radius() + b.core_radius();
-  const S size = a.bounding_radius() + b.bounding_radius();
+  S bound_a, bound_b;
+  detail::bounding_radii(a, b, bound_a, bound_b);
+  const S size = bound_a + bound_b;
   const S reach = radius + tolerances.relative * size;  // core distances that count as touching
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form, no iteration.

@@ -47,6 +47,20 @@ template <class A, class B>
   bound_b += b.core_radius();
 }
 
+/// a.bounding_radius() and b.bounding_radius(), for two boxes with one square root
+/// (box_bounding_radii()): the separating axis test's verdict waits on them.
+template <class A, class B>
+[[gnu::always_inline]] inline void bounding_radii(const A& a, const B& b,
+                                                  typename A::Scalar& bound_a,
+                                                  typename A::Scalar& bound_b) {
+  if constexpr (BoxCore<A>::value && BoxCore<B>::value) {
+    box_bounding_radii(a, b, bound_a, bound_b);
+  } else {
+    bound_a = a.bounding_radius();
+    bound_b = b.bounding_radius();
+  }
+}
+
 /// The 15 separating axes of box A (half extents ha) and box B (half extents hb) whose pose in
 /// A's frame is (r, t): on each axis, the sum of the two radii minus the distance between the
 /// centres (> 0 overlapping, < 0 a gap). Face axes are unit; edge axes e_i x r.col(j) (index
