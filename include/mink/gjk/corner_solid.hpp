@@ -12,7 +12,6 @@
 #include <limits>
 #include <optional>
 #include <type_traits>
-#include <variant>
 
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/support_descent.hpp"
@@ -58,18 +57,8 @@ bool with_solid(const T& shape, Fn&& fn) {
     }
   } else if constexpr (std::is_same_v<T, Shape>) {
     if (shape.cores().size() == 1)
-      return std::visit(
-          [&](const auto& core) {
-            using C = std::decay_t<decltype(core)>;
-            if constexpr (SolidCore<C>::value) {
-              if (const auto* solid = SolidCore<C>::core(core)) {
-                fn(std::type_identity<SolidCore<C>>{}, *solid);
-                return true;
-              }
-            }
-            return false;
-          },
-          shape.cores().front());
+      return visit_core(shape.cores().front(),
+                        [&](const auto& core) { return with_solid(core, fn); });
   }
   return false;
 }

@@ -60,6 +60,17 @@ struct PointSolidLocal {
   /// Inside only: another direction is as good (see the solid's local()); `out_of_solid` is then
   /// the one the solid's local() names.
   bool tie;
+
+  /// For p outside: signed_distance and out_of_solid from `gap`, p minus its nearest point on the
+  /// solid, at any magnitude (length_of(), unit_of()). Returns false, out_of_solid untouched, when
+  /// the gap has no length.
+  bool set_outside_gap(const Vec3T<S>& gap) {
+    const S gap_sq = gap.squaredNorm();
+    signed_distance = length_of(gap, gap_sq);
+    if (!(signed_distance > S(0))) return false;
+    out_of_solid = unit_of(gap, gap_sq, signed_distance);
+    return true;
+  }
 };
 
 /// Solid cores with a closed-form nearest point: SolidCore<T>::core(t) points to the solid (a Box,
@@ -96,12 +107,8 @@ struct SolidCore<BoxT<S>> : std::true_type, GapOfClamp<SolidCore<BoxT<S>>> {
     out.on_solid = clamp(b, p);
     out.tie = false;
     const Vec3T<S> gap = p - out.on_solid;
-    if (gap != Vec3T<S>::Zero()) {  // a coordinate was clamped: outside
-      const S gap_sq = gap.squaredNorm();
-      out.signed_distance = length_of(gap, gap_sq);
-      out.out_of_solid = unit_of(gap, gap_sq, out.signed_distance);
-      return out;
-    }
+    // A coordinate was clamped: outside (a gap that is not zero has a length).
+    if (gap != Vec3T<S>::Zero() && out.set_outside_gap(gap)) return out;
     // Inside (or on the surface): out through the face nearest to p.
     const Vec3T<S> below = h - p.cwiseAbs();
     int k = 0;
@@ -159,10 +166,8 @@ struct SolidCore<CylinderT<S>> : std::true_type, GapOfClamp<SolidCore<CylinderT<
       // Outside: the gap in the (radial, axial) plane, from the clamped distances, which carry
       // no cancellation of p's coordinates against the clamp.
       const S radial_gap = std::max(S(0), beyond_side), axial_gap = std::max(S(0), beyond_cap);
-      const Vec3T<S> gap(ux * radial_gap, uy * radial_gap, cap_sign * axial_gap);
-      const S gap_sq = gap.squaredNorm();
-      out.signed_distance = length_of(gap, gap_sq);
-      out.out_of_solid = unit_of(gap, gap_sq, out.signed_distance);
+      // Not zero: one of the two gaps is positive, along a unit direction.
+      out.set_outside_gap(Vec3T<S>(ux * radial_gap, uy * radial_gap, cap_sign * axial_gap));
       out.on_solid = beyond_side > S(0) ? Vec3T<S>(ux * c.radius, uy * c.radius, side_z)
                                         : Vec3T<S>(p.x(), p.y(), side_z);
       return out;
@@ -252,11 +257,9 @@ struct SolidCore<ConeT<S>> : std::true_type, GapOfClamp<SolidCore<ConeT<S>>> {
     // The gap from the section's differences, which carry no cancellation of p's coordinates
     // against the nearest point's.
     const S radial_gap = rho - rho_near;
-    const Vec3T<S> gap(ux * radial_gap, uy * radial_gap, p.z() - z_near);
-    const S gap_sq = gap.squaredNorm();
-    out.signed_distance = length_of(gap, gap_sq);
-    if (!(out.signed_distance > S(0)) || !is_finite(out.on_solid)) return std::nullopt;
-    out.out_of_solid = unit_of(gap, gap_sq, out.signed_distance);
+    if (!is_finite(out.on_solid) ||
+        !out.set_outside_gap(Vec3T<S>(ux * radial_gap, uy * radial_gap, p.z() - z_near)))
+      return std::nullopt;
     return out;
   }
   /// local() for a p inside, at (rho, z) with radial direction (ux, uy): out through the nearer of
