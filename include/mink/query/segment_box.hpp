@@ -101,19 +101,27 @@ std::optional<SegmentBoxLocal<S>> segment_box_local(const Vec3T<S>& c, const Vec
     }
   }
   // Else the minimum is at a cut, or on a stretch where f is flat (the segment parallel to a face
-  // or an edge, or through the box): the middle of the cuts where f is least, to its rounding
-  // (each gap coordinate is good to a few ulps of the largest input). A segment parallel to a face
-  // to rounding (a quarter turn's cosine, 6e-17) would otherwise end at one end or the other by a
-  // coin toss.
-  S values[8];
-  for (int k = 0; k < count; ++k) values[k] = excess(cuts[k]).squaredNorm();
-  const S best = *std::min_element(values, values + count);
+  // or an edge, or through the box): the middle of the cuts where f is least, to its rounding. A
+  // segment parallel to a face to rounding (a quarter turn's cosine, 6e-17) would otherwise end at
+  // one end or the other by a coin toss. Each gap coordinate is good to a few ulps of its own
+  // terms, |c_i| + |d_i| + h_i, and f's rounding at a cut is about eps times the sum of those
+  // times the gap's coordinates. Not the largest input for every coordinate: a box 4.5e15 long in
+  // z made both ends of a segment 1.7e10 away along x ties, whose middle then gave the gap's
+  // direction 90 degrees off (orthogonal to the segment, segment_box_direction()).
+  S values[8], roundings[8];
+  const Vec3T<S> terms = c.cwiseAbs() + d.cwiseAbs() + h;
+  for (int k = 0; k < count; ++k) {
+    const Vec3T<S> e = excess(cuts[k]);
+    values[k] = e.squaredNorm();
+    roundings[k] = e.cwiseAbs().dot(terms);
+  }
+  const int best_cut = int(std::min_element(values, values + count) - values);
+  const S best = values[best_cut];
   if (!std::isfinite(best)) return std::nullopt;
-  const S scale = std::max({c.cwiseAbs().maxCoeff(), d.cwiseAbs().maxCoeff(), h.maxCoeff()});
-  const S within = best + S(8) * std::numeric_limits<S>::epsilon() * scale * std::sqrt(best);
+  constexpr S kEps = std::numeric_limits<S>::epsilon();
   S first = S(1), last = S(-1);
   for (int k = 0; k < count; ++k) {
-    if (values[k] > within) continue;
+    if (values[k] - best > S(8) * kEps * (roundings[k] + roundings[best_cut])) continue;
     first = std::min(first, cuts[k]);
     last = std::max(last, cuts[k]);
   }
@@ -130,6 +138,15 @@ std::optional<SegmentBoxLocal<S>> segment_box_local(const Vec3T<S>& c, const Vec
 template <class S>
 Vec3T<S> segment_box_direction(const SegmentBoxLocal<S>& local, const Vec3T<S>& plain) {
   if (!(std::abs(local.t) < S(1))) return plain;  // an end point: no constraint along the segment
+  // An interior point where the segment crosses a face's plane (a kink of the distance) need not
+  // be a stationary one: its gap is then not orthogonal to the segment beyond rounding (a few eps
+  // of the terms), and it is left as it is. (A segment's end 4e-16 beyond a face's plane had its
+  // point at the crossing, 4e-16 from the end; made orthogonal to the segment, the normal was 85
+  // degrees off.)
+  constexpr S kEps = std::numeric_limits<S>::epsilon();
+  if (!(std::abs(plain.dot(local.along)) * local.gap.norm() <=
+        S(16) * kEps * std::sqrt(local.terms_sq) * local.along.norm()))
+    return plain;
   int beyond = 0, within = -1;
   for (int i = 0; i < 3; ++i) {
     if (local.gap[i] != S(0))

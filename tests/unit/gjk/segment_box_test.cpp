@@ -270,6 +270,59 @@ TEST(SegmentBox, CapsuleLyingBesideAFaceTakesTheMiddleOfTheStretch) {
   EXPECT_NEAR(r.point_a.z(), 1.5, 1e-15);
 }
 
+TEST(SegmentBox, AnEndFarFromALongBoxIsNotATie) {
+  // A plate 1e16 long in z beside a segment 1e10 away along x: the segment's end x = -1e10 + 1
+  // is nearest, to the box's edge (x, y) = (-1, 1e-3). Rounding of the long axis's terms once
+  // made both ends of the segment a tie, and the middle's gap, turned orthogonal to the segment,
+  // pointed along y. Its points, normal and distance, worked out by hand:
+  const mink::Box box{Vec3(1, 1e-3, 1e16)};
+  const mink::Segment segment{Vec3(0, 0, -1), Vec3(0, 0, 1)};
+  const Pose along_x =
+      Pose::from(Vec3(-1e10, 100, 0), Quat(Eigen::AngleAxisd(-M_PI / 2, Vec3::UnitY())));
+  const Vec3 end(-1e10 + 1, 100, 0), edge(-1, 1e-3, 0);
+  for (const bool swapped : {false, true}) {
+    const auto r = swapped ? mink::distance(segment, along_x, box, Pose{})
+                           : mink::distance(box, Pose{}, segment, along_x);
+    ASSERT_EQ(r.status, mink::Status::Separated);
+    const Vec3 on_box = swapped ? r.point_b : r.point_a,
+               on_segment = swapped ? r.point_a : r.point_b;
+    EXPECT_NEAR(r.distance, (end - edge).norm(), 1e-4);
+    EXPECT_NEAR((on_segment - end).norm(), 0, 1e-5);
+    EXPECT_NEAR(on_box.x(), edge.x(), 1e-5);
+    EXPECT_NEAR(on_box.y(), edge.y(), 1e-9);
+    const Vec3 expected = (swapped ? edge - end : end - edge).normalized();
+    EXPECT_LT((r.normal - expected).norm(), 1e-12);
+    EXPECT_LT((r.point_b - r.point_a - r.distance * r.normal).norm(), 1e-5);
+  }
+}
+
+TEST(SegmentBox, AnEndJustBeyondAFacePlaneKeepsItsGapDirection) {
+  // A fuzz input: the segment's nearest point is its end a, which the pose (whose first entry is
+  // -1 - 4e-16, within the rotations' tolerance) puts 4e-16 beyond the box's face x = -1, 1 beyond
+  // y = 1. The point at the crossing of x = -1, 4e-16 from the end, was taken for an interior
+  // minimum and its gap made orthogonal to the segment: the normal came out 85 degrees off. The
+  // answer here: the end's gap to the box, in long double.
+  const mink::Segment segment{Vec3(1, 2, 0), Vec3(0, -1, -3395.5)};
+  const mink::Box box{Vec3(1, 1, 1)};
+  Pose pose;
+  pose.rotation << -1.0000000000000004, 0, 0, 0, 0.999991566494844, -0.0041069379333073053, -0.0,
+      -0.0041069379333073053, -0.99999156649484422;
+  pose.translation = Vec3::Zero();
+  const oracle::V3 end = widen(pose.rotation) * widen(segment.a);
+  const oracle::V3 on_box =
+      end.cwiseMax(-widen(box.half_extents)).cwiseMin(widen(box.half_extents));
+  const oracle::V3 gap = on_box - end;  // from the segment (A) to the box (B)
+  for (const bool swapped : {false, true}) {
+    const auto r = swapped ? mink::distance(box, Pose{}, segment, pose)
+                           : mink::distance(segment, pose, box, Pose{});
+    ASSERT_EQ(r.status, mink::Status::Separated);
+    EXPECT_NEAR(r.distance, static_cast<double>(gap.norm()), 1e-12);
+    const oracle::V3 expected = (swapped ? -gap : gap).normalized();
+    EXPECT_LT((widen(r.normal) - expected).norm(), 1e-12L);
+    EXPECT_LT((r.point_b - r.point_a - r.distance * r.normal).norm(), 1e-12);
+  }
+}
+
 TEST(SegmentBox, FloatAgreesWithDouble) {
   Rng rng(4902);
   for (int i = 0; i < 100; ++i) {
