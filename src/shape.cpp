@@ -1,8 +1,11 @@
 #include "mink/support/shape.hpp"
 
 #include <cmath>
+#include <memory>
 #include <optional>
+#include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace mink {
 
@@ -68,7 +71,58 @@ bool fold_core(Core& into, const Core& part) {
   return false;
 }
 
+/// `core` with every length multiplied by `factor`.
+Expected<Core> scaled_core(const Core& core, double factor) {
+  return std::visit(
+      [factor](const auto& c) -> Expected<Core> {
+        using T = std::decay_t<decltype(c)>;
+        if constexpr (std::is_same_v<T, Point>) {
+          return Core{Point{factor * c.position}};
+        } else if constexpr (std::is_same_v<T, Segment>) {
+          return Core{Segment{factor * c.a, factor * c.b}};
+        } else if constexpr (std::is_same_v<T, Triangle>) {
+          return Core{Triangle{factor * c.a, factor * c.b, factor * c.c}};
+        } else if constexpr (std::is_same_v<T, Box>) {
+          return Core{Box{factor * c.half_extents}};
+        } else if constexpr (std::is_same_v<T, Cylinder>) {
+          return Core{Cylinder{factor * c.radius, factor * c.half_height}};
+        } else if constexpr (std::is_same_v<T, Cone>) {
+          return Core{Cone{factor * c.radius, factor * c.half_height}};
+        } else if constexpr (std::is_same_v<T, Ellipsoid>) {
+          return Core{Ellipsoid{factor * c.radii}};
+        } else {
+          // A polytope's points or a hull's vertices, scaled, made into the same kind again.
+          std::vector<Vec3> points(c->size());
+          for (std::size_t i = 0; i < points.size(); ++i) points[i] = factor * c->point(i);
+          using Made = std::decay_t<decltype(*c)>;
+          auto made = Made::make(points);
+          if (!made) return Expected<Core>::failure(made.error());
+          return Core{std::make_shared<const Made>(std::move(made).value())};
+        }
+      },
+      core);
+}
+
 }  // namespace
+
+Expected<Shape> Shape::scaled(double factor) const {
+  if (!(factor > 0) || !std::isfinite(factor))
+    return Expected<Shape>::failure("scale factor must be finite and > 0");
+  if (cores_.empty()) return Expected<Shape>::failure("scaled shape is empty");
+  Shape s;
+  s.radius_ = factor * radius_;
+  s.bounding_radius_ = s.radius_;
+  for (const Core& core : cores_) {
+    auto c = scaled_core(core, factor);
+    if (!c) return Expected<Shape>::failure(c.error());
+    if (const char* e = core_error(c.value())) return Expected<Shape>::failure(e);
+    s.bounding_radius_ += core_bounding_radius(c.value());
+    s.cores_.push_back(std::move(c).value());
+  }
+  if (!std::isfinite(s.radius_) || !std::isfinite(s.bounding_radius_))
+    return Expected<Shape>::failure("scaled shape's lengths overflow");
+  return s;
+}
 
 Expected<Shape> Shape::from_core(Core core, double radius) {
   if (const char* e = core_error(core)) return Expected<Shape>::failure(e);

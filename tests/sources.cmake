@@ -5,6 +5,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/shapes/support_mapping_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/shapes/core_centre_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/shapes/shape_sum_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/shapes/shape_scale_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/oracle/oracle_self_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/oracle/curved.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/smoke_test.cpp

@@ -145,7 +145,7 @@ class ConvexHullShapeT {
       shape.z_[i] = p.z();
       shape.input_indices_[i] = hull.vertices[i].input_index;
       shape.nodes_[i] = Node{{p.x(), p.y(), p.z()}, offsets[i], offsets[i + 1]};
-      shape.bounding_radius_ = std::max(shape.bounding_radius_, p.norm());
+      shape.bounding_radius_ = std::max(shape.bounding_radius_, detail::length_of(p));
       shape.centre_ += p / S(n);  // divided first: no overflow near the largest doubles
     }
     shape.edges_.resize(hull.neighbors.size());

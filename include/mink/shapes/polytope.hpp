@@ -122,7 +122,7 @@ class PolytopeT {
       p.x_[i] = points[i].x();
       p.y_[i] = points[i].y();
       p.z_[i] = points[i].z();
-      p.bounding_radius_ = std::max(p.bounding_radius_, points[i].norm());
+      p.bounding_radius_ = std::max(p.bounding_radius_, detail::length_of(points[i]));
       p.centre_ += points[i] / S(n);  // divided first: no overflow near the largest doubles
     }
     if (n >= kHullClimbMinVertices && n <= std::numeric_limits<std::uint32_t>::max() / 2)

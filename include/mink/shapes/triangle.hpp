@@ -24,7 +24,9 @@ struct TriangleT {
   }
   Vec3T<S> core_centre() const { return a / S(3) + b / S(3) + c / S(3); }
   S core_radius() const { return S(0); }
-  S bounding_radius() const { return std::max({a.norm(), b.norm(), c.norm()}); }
+  S bounding_radius() const {  // at any magnitude (length_of())
+    return std::max({detail::length_of(a), detail::length_of(b), detail::length_of(c)});
+  }
   const char* error() const {
     return is_finite(a) && is_finite(b) && is_finite(c) ? nullptr
                                                         : "triangle points are not finite";

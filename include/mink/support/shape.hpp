@@ -77,6 +77,12 @@ class Shape {
   /// The shape grown by `margin` ("collision skin").
   static Expected<Shape> rounded(const Shape& shape, double margin);
 
+  /// The same shape with every length (coordinates, extents, radii) multiplied by `factor`
+  /// (finite, > 0; a power of two keeps it exact). Polytopes are copied and hulls rebuilt from
+  /// their vertices. The run-time queries solve pairs of tiny or huge shapes this way
+  /// (src/shape_dispatch.hpp). Errors: a bad factor, or lengths that overflow.
+  Expected<Shape> scaled(double factor) const;
+
   const std::vector<Core>& cores() const { return cores_; }
 
   Vec3 support_core(const Vec3& d) const;
