@@ -8,6 +8,12 @@
 /// So for single-core shapes of different core types, swapping A and B flips every answer exactly,
 /// and a `GjkCache` belongs to the unordered pair. Cores of one type, and sums of several cores,
 /// run in the caller's order; their swapped answers agree within the error bounds.
+///
+/// Scale: a pair whose shapes and offset (B's origin from A's) are all shorter than 2^-120
+/// (about 7.5e-37), or whose shapes are larger than 2^120, is solved as copies scaled by a power
+/// of two to about unit size (Shape::scaled(), an allocation) and its answer scaled back, exactly:
+/// the algorithms multiply up to six lengths, which underflow below about 1e-50 and overflow above
+/// 1e51 (docs/benchmarks.md, "Stop 57"). The templated queries on typed shapes do not do this yet.
 #pragma once
 
 #include "mink/epa/contact.hpp"
