@@ -338,7 +338,7 @@ inline constexpr double kBoxTie = 1e-12;
 /// The closest points of A's and B's support edges along the edge axis `axis` (A's frame), when
 /// both lie inside their edges: two crossing edges, whose closest points differ along the axis
 /// only. False when an edge has no length (1e-12 of the boxes' size), the support feature along the
-/// axis is a face (a tie), or a closest point is an end point.
+/// axis is a face (a tie), a closest point is an end point, or the points differ off the axis.
 template <class S>
 bool box_box_crossing_edges(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
                             const Vec3T<S>& t, const BoxBoxAxis<S>& axis, Vec3T<S>& on_a,
@@ -367,7 +367,16 @@ bool box_box_crossing_edges(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<
   const CoreSegment<S> edge_b{r * corner_b + t, r.col(j) * hb[j]};
   S u = S(0), v = S(0);
   closest_points_of_segments(edge_a, edge_b, on_a, on_b, &u, &v);
-  return std::abs(u) < S(1) && std::abs(v) < S(1);
+  if (!(std::abs(u) < S(1) && std::abs(v) < S(1))) return false;
+  // Crossing edges' closest points differ along the axis only. Edges shorter than 1e-77 of their
+  // distance (boxes 1e-300 across and 54 apart, or 1 across and 1e120 apart) are points to the
+  // segments' solve, whose u = v = 0 then need not be interior: the difference leaves the axis
+  // (by 1e-3 and 0.3 of the distance there). True crossings stay within 3 eps of the pair's
+  // magnitude (2e6 random ones).
+  const Vec3T<S> gap = on_b - on_a;
+  const S off_axis = (gap - gap.dot(n) * n).cwiseAbs().maxCoeff();
+  const S magnitude = t.cwiseAbs().maxCoeff() + ha.maxCoeff() + hb.maxCoeff();
+  return off_axis <= S(64) * std::numeric_limits<S>::epsilon() * magnitude;
 }
 
 /// Closest points over a face: the reference box (half extents h_ref, at the origin of its frame)

@@ -515,4 +515,61 @@ TEST(GjkNasty, BoxInANeedleAgreesWithDistance) {
   EXPECT_NEAR(c.depth, depth, 1e-12 * size + c.error_bound);
 }
 
+TEST(GjkNasty, BoxesFarApartForTheirSizeAreNotCrossingEdges) {
+  // Boxes whose edges are shorter than 1e-77 of their distance (found by fuzzing): the segments'
+  // solve treats such edges as points, and their closest points, taken for crossing edges along an
+  // edge axis, left the axis. The normal was 1.5e-3 rad and 18 degrees off, the distance 1e-6 and
+  // 5 % short. Against boxes this small for their distance, the distance is that of their centres
+  // to 1e-100 of itself, and the normal is the line between them.
+  struct Case {
+    Vec3 ha, hb, ta, tb;
+    double ra[9], rb[9];
+  };
+  const Case cases[] = {
+      {Vec3(0, 1e-300, 1e-300),
+       Vec3(4.9406564584124654e-324, 1e-300, 1e-300),
+       Vec3(4.6566128730773926e-10, -54.3671875, 1e-300),
+       Vec3(2.8421709430404007e-14, -0.08776092529296875, -0.07872772216796875),
+       {0.99221789883268308, -0.12451361867704269, 5.9372720087548586e-08, 0.12451361867704269,
+        0.99221789883268485, 3.7107950054717866e-09, -5.9372720087548586e-08,
+        3.7107950054717866e-09, 0.99999999999999822},
+       {0, 0, 1, 1, 0, 0, 0, 1, 0}},
+      {Vec3(1, 512, 1.4796387404203415e-07),
+       Vec3(1, 1, 1),
+       Vec3(-0.1990966796875, 0, 1.2151717632445912e+120),
+       Vec3(4.0354991326765202e+119, 1e-300, -3.8556754589080811e-06),
+       {0.99999999446781629, -6.4709126766666226e-11, 0.00010518729657638202, 3.5605296390443e-11,
+        -0.99999999999954525, -9.5367431453342077e-07, 0.0001051872965763959,
+        9.5367431300274414e-07, -0.99999999446736165},
+       {1, 0, 0, 0, 1, 0, 0, 0, 1}},
+  };
+  for (const Case& c : cases) {
+    Pose pa, pb;
+    for (int i = 0; i < 9; ++i) {
+      pa.rotation(i / 3, i % 3) = c.ra[i];
+      pb.rotation(i / 3, i % 3) = c.rb[i];
+    }
+    pa.translation = c.ta;
+    pb.translation = c.tb;
+    const Vec3 between = c.tb - c.ta;
+    const double distance = between.norm();
+    const Vec3 normal = between / distance;
+    const double tol = 1e-12 * distance;
+    expect_separated(Box{c.ha}, pa, Box{c.hb}, pb, distance, tol, normal);
+    const auto a = mink::Shape::box(c.ha), b = mink::Shape::box(c.hb);
+    ASSERT_TRUE(a && b);
+    const auto ab = mink::distance(a.value(), pa, b.value(), pb);
+    const auto ba = mink::distance(b.value(), pb, a.value(), pa);
+    EXPECT_NEAR(ab.distance, distance, tol);
+    EXPECT_NEAR(ba.distance, distance, tol);
+    EXPECT_LE((ab.normal - normal).norm(), 1e-12) << ab.normal.transpose();
+    EXPECT_LE((ba.normal + normal).norm(), 1e-12) << ba.normal.transpose();
+    const auto contact = mink::contact(a.value(), pa, b.value(), pb);
+    EXPECT_FALSE(contact.intersect);
+    EXPECT_NEAR(contact.distance, distance, tol);
+    EXPECT_LE((contact.normal - normal).norm(), 1e-12) << contact.normal.transpose();
+    EXPECT_LE((contact.point_b - contact.point_a - distance * normal).norm(), tol);
+  }
+}
+
 }  // namespace
