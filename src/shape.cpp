@@ -15,6 +15,13 @@ double core_bounding_radius(const Core& core) {
   return visit_core(core, [](const auto& c) -> double { return c.bounding_radius(); });
 }
 
+/// A shape's bounding radius: its cores' summed, and its radius.
+double bounding_radius_of(const std::vector<Core>& cores, double radius) {
+  double r = radius;
+  for (const Core& core : cores) r += core_bounding_radius(core);
+  return r;
+}
+
 const char* core_error(const Core& core) {
   return std::visit(
       [](const auto& c) -> const char* {
@@ -111,14 +118,13 @@ Expected<Shape> Shape::scaled(double factor) const {
   if (cores_.empty()) return Expected<Shape>::failure("scaled shape is empty");
   Shape s;
   s.radius_ = factor * radius_;
-  s.bounding_radius_ = s.radius_;
   for (const Core& core : cores_) {
     auto c = scaled_core(core, factor);
     if (!c) return Expected<Shape>::failure(c.error());
     if (const char* e = core_error(c.value())) return Expected<Shape>::failure(e);
-    s.bounding_radius_ += core_bounding_radius(c.value());
     s.cores_.push_back(std::move(c).value());
   }
+  s.bounding_radius_ = bounding_radius_of(s.cores_, s.radius_);
   if (!std::isfinite(s.radius_) || !std::isfinite(s.bounding_radius_))
     return Expected<Shape>::failure("scaled shape's lengths overflow");
   return s;
@@ -129,9 +135,9 @@ Expected<Shape> Shape::from_core(Core core, double radius) {
   if (!std::isfinite(radius) || radius < 0)
     return Expected<Shape>::failure("radius must be finite and >= 0");
   Shape s;
-  s.bounding_radius_ = core_bounding_radius(core) + radius;
   s.cores_.push_back(std::move(core));
   s.radius_ = radius;
+  s.bounding_radius_ = bounding_radius_of(s.cores_, radius);
   return s;
 }
 
@@ -224,8 +230,7 @@ Expected<Shape> Shape::sum(const Shape& a, const Shape& b) {
     if (!folded) s.cores_.push_back(part);
   }
   s.radius_ = a.radius_ + b.radius_;
-  s.bounding_radius_ = s.radius_;
-  for (const Core& core : s.cores_) s.bounding_radius_ += core_bounding_radius(core);
+  s.bounding_radius_ = bounding_radius_of(s.cores_, s.radius_);
   return s;
 }
 

@@ -217,4 +217,21 @@ auto solve_in_range(const Shape& a, const Pose& pose_a, const Shape& b, const Po
   return solve(a, pose_a, b, pose_b, 1.0);
 }
 
+/// The whole run-time query: `query(ca, qa, cb, qb, factor)` on the pair's concrete cores
+/// (dispatch()), scaled into the range of lengths by `factor` where it is out of it
+/// (solve_in_range()). Only lengths among the query's options need the factor (a manifold's
+/// margin).
+template <class Query>
+auto run_query(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
+               Query&& query) {
+  return solve_in_range(
+      a, pose_a, b, pose_b,
+      [&](const Shape& sa, const Pose& pa, const Shape& sb, const Pose& pb, double factor) {
+        return dispatch(sa, pa, sb, pb,
+                        [&](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb) {
+                          return query(ca, qa, cb, qb, factor);
+                        });
+      });
+}
+
 }  // namespace mink::detail

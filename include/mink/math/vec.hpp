@@ -74,11 +74,13 @@ template <class S>
 /// |v| from its square `v_sq` (= v.squaredNorm()), also where that square underflows (vectors of
 /// 1e-154 and shorter: the root of the rounded square is off by up to 1e-3, and a normal
 /// v / |v| then is not unit) or overflows (1e154 and longer): Eigen's stableNorm() rescales first.
+/// The zero vector (a sphere's centre, a vertex at the origin) stays off that call.
 template <class S>
 [[gnu::always_inline]] inline S length_of(const Vec3T<S>& v, S v_sq) {
-  return v_sq >= std::numeric_limits<S>::min() && v_sq <= std::numeric_limits<S>::max()
-             ? std::sqrt(v_sq)
-             : stable_length(v);
+  if (v_sq >= std::numeric_limits<S>::min() && v_sq <= std::numeric_limits<S>::max()) [[likely]]
+    return std::sqrt(v_sq);
+  if (v.x() == 0 && v.y() == 0 && v.z() == 0) return S(0);
+  return stable_length(v);
 }
 
 /// |v| at any magnitude.
