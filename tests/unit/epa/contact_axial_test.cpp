@@ -25,7 +25,9 @@
 #include "oracle/poses.hpp"
 #include "oracle/random.hpp"
 
-namespace {
+// Named, not anonymous: the tests compile in unity batches (tests/CMakeLists.txt), where the
+// names of this file's helpers (kinds, cases) would clash with other files' helpers.
+namespace contact_axial_test {
 
 using mink::Pose;
 using mink::Quat;
@@ -573,4 +575,4 @@ TEST(ContactAxial, RunTimeShapesTakeTheSamePath) {
   }
 }
 
-}  // namespace
+}  // namespace contact_axial_test

@@ -20,7 +20,9 @@
 #include "oracle/penetration.hpp"
 #include "oracle/random.hpp"
 
-namespace {
+// Named, not anonymous: the tests compile in unity batches (tests/CMakeLists.txt), where the
+// names of this file's helpers (kinds, cases) would clash with other files' helpers.
+namespace contact_brute_force_test {
 
 using mink::Pose;
 using mink::Vec3;
@@ -375,7 +377,7 @@ mink::Shape random_sum_part(Rng& rng, std::vector<Vec3>& pts, bool& needle, bool
 /// A random sum of two parts (random_sum_part()), sometimes rounded, as A at `pa`, and a random
 /// polytope, sometimes rounded, as B; with the sum's points p + q (local), both shapes' world
 /// points in long double (where p + q is exact, or within 1e-19 of the size), and their size.
-struct SumCase {
+struct SumPairCase {
   mink::Shape a, b;
   double ra = 0, rb = 0;
   bool needle = false;
@@ -384,7 +386,7 @@ struct SumCase {
   Pose pa;
   double size = 0;
 
-  explicit SumCase(Rng& rng) {
+  explicit SumPairCase(Rng& rng) {
     std::vector<Vec3> p, q;
     const mink::Shape first = random_sum_part(rng, p, needle, false);
     const mink::Shape second = random_sum_part(rng, q, needle, !rng.chance(0.1));
@@ -425,7 +427,7 @@ TEST(ContactBruteForce, SumsAgainstPolytopes) {
     const std::uint64_t seed = base + i;
     SCOPED_TRACE(oracle::seed_note(seed));
     Rng rng(seed);
-    const SumCase c(rng);
+    const SumPairCase c(rng);
     std::vector<V3> wb;
     Real depth = 0;
     const Pose pb = place_penetrating(
@@ -451,7 +453,7 @@ TEST(ContactBruteForce, SumsApartFromPolytopes) {
     const std::uint64_t seed = base + i;
     SCOPED_TRACE(oracle::seed_note(seed));
     Rng rng(seed);
-    const SumCase c(rng);
+    const SumPairCase c(rng);
     const Pose pb = Pose::from(c.pa.translation + rng.unit() * (c.size * rng.uniform(0.3, 1.3)),
                                rng.rotation());
     std::vector<V3> wb;
@@ -489,4 +491,4 @@ TEST(ContactBruteForce, SumsApartFromPolytopes) {
   EXPECT_GT(separated, n / 4);
 }
 
-}  // namespace
+}  // namespace contact_brute_force_test

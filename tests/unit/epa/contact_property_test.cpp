@@ -23,7 +23,9 @@
 #include "oracle/contact_check.hpp"
 #include "oracle/random.hpp"
 
-namespace {
+// Named, not anonymous: the tests compile in unity batches (tests/CMakeLists.txt), where the
+// names of this file's helpers (kinds, cases) would clash with other files' helpers.
+namespace contact_property_test {
 
 using mink::Pose;
 using mink::Vec3;
@@ -450,4 +452,4 @@ TEST(ContactProperty, StaticBoxBox) {
   static_pairs<mink::Box, mink::Box>("contact static box-box", kBox, kBox, 570000, 150);
 }
 
-}  // namespace
+}  // namespace contact_property_test

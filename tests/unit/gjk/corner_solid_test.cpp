@@ -48,7 +48,7 @@ const char* name_of(Feature f) {
   return "?";
 }
 
-struct Scene {
+struct CornerScene {
   bool cone = true;
   mink::Cone cone_shape;
   mink::Cylinder cylinder;
@@ -110,9 +110,9 @@ void pick_feature(oracle::Rng& rng, Feature f, double r, double h, Vec3& e, Vec3
   }
 }
 
-Scene make_scene(std::uint64_t seed, Feature f) {
+CornerScene make_scene(std::uint64_t seed, Feature f) {
   oracle::Rng rng(seed);
-  Scene s;
+  CornerScene s;
   s.cone = f == Feature::ConeRim || f == Feature::ConeApex || f == Feature::ConeSlant;
   const double r = rng.uniform(0.2, 1.5), h = rng.uniform(0.2, 1.5);
   s.cone_shape = mink::Cone{r, h};
@@ -145,7 +145,7 @@ Scene make_scene(std::uint64_t seed, Feature f) {
 
 // One query in one order: `box_first` puts the box first, which turns the normal round.
 template <class Result>
-void expect_exact(const Scene& s, const Result& r, bool box_first) {
+void expect_exact(const CornerScene& s, const Result& r, bool box_first) {
   const double rounding = oracle::world_rounding(s.pose_solid.translation);
   const double tolerance = 1e-9 * s.size + rounding;
   const std::string order = box_first ? " (box first)" : " (box second)";
@@ -159,7 +159,7 @@ void expect_exact(const Scene& s, const Result& r, bool box_first) {
 }
 
 template <class Solid>
-void expect_all_queries(const Scene& s, const Solid& solid) {
+void expect_all_queries(const CornerScene& s, const Solid& solid) {
   expect_exact(s, mink::distance(s.box, s.pose_box, solid, s.pose_solid), true);
   expect_exact(s, mink::distance(solid, s.pose_solid, s.box, s.pose_box), false);
   expect_exact(s, mink::contact(s.box, s.pose_box, solid, s.pose_solid), true);
@@ -169,7 +169,7 @@ void expect_all_queries(const Scene& s, const Solid& solid) {
 void sweep(Feature f, std::uint64_t first_seed) {
   const int count = oracle::sweep_count(200, 60);
   for (int i = 0; i < count; ++i) {
-    const Scene s = make_scene(first_seed + i, f);
+    const CornerScene s = make_scene(first_seed + i, f);
     if (s.cone)
       expect_all_queries(s, s.cone_shape);
     else
@@ -202,7 +202,7 @@ TEST(CornerSolid, BoxCornerAgainstACylinderCap) {
 TEST(CornerSolid, SumCornerBesideAConeRimAsShapes) {
   const int count = oracle::sweep_count(100, 30);
   for (int i = 0; i < count; ++i) {
-    const Scene s = make_scene(56800 + i, Feature::ConeRim);
+    const CornerScene s = make_scene(56800 + i, Feature::ConeRim);
     // The box plus a small tetrahedron whose corner along -n is the origin, its other corners
     // 0.05 or more below it: the sum's corner along -n is the box's.
     oracle::Rng rng(1000000 + 56800 + i);
@@ -227,7 +227,7 @@ TEST(CornerSolid, SphereAgainstAConeInClosedForm) {
   const int count = oracle::sweep_count(300, 100);
   const Feature features[] = {Feature::ConeRim, Feature::ConeApex, Feature::ConeSlant};
   for (int i = 0; i < count; ++i) {
-    const Scene s = make_scene(57000 + i, features[i % 3]);
+    const CornerScene s = make_scene(57000 + i, features[i % 3]);
     const double radius = 0.5 * s.gap;
     const mink::Sphere sphere{radius};
     const Pose pose_sphere = Pose::from(s.corner, mink::Quat(1, 0, 0, 0));

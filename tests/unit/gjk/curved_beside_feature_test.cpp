@@ -31,30 +31,30 @@ using mink::Pose;
 using mink::Shape;
 using mink::Vec3;
 
-enum class Feature { Face, Edge, Corner };
+enum class BesideFeature { Face, Edge, Corner };
 
-struct Scene {
+struct BesideScene {
   Shape polyhedral, curved;
   Pose pose_polyhedral, pose_curved;
   Vec3 contact;      // e: on the polyhedral shape, world frame
   Vec3 normal;       // n: from the polyhedral shape towards the curved one
   double gap = 0;    // < 0: the shapes overlap by -gap
   Vec3 half, radii;  // the box's half extents, the ellipsoid's radii (for the oracle)
-  Feature feature = Feature::Face;
+  BesideFeature feature = BesideFeature::Face;
   double size = 0;
   std::string note;
 };
 
-const char* feature_name(Feature f) {
-  return f == Feature::Face ? "face" : f == Feature::Edge ? "edge" : "corner";
+const char* feature_name(BesideFeature f) {
+  return f == BesideFeature::Face ? "face" : f == BesideFeature::Edge ? "edge" : "corner";
 }
 
 enum class Placement { Apart, Overlapping, Touching };
 
-Scene make_scene(std::uint64_t seed, Placement placement) {
+BesideScene make_scene(std::uint64_t seed, Placement placement) {
   const bool overlapping = placement == Placement::Overlapping;
   oracle::Rng rng(seed);
-  Scene s;
+  BesideScene s;
   const Vec3 half(rng.uniform(0.1, 1.5), rng.uniform(0.1, 1.5), rng.uniform(0.1, 1.5));
   s.half = half;
   const bool as_polytope = rng.chance(0.5);
@@ -72,9 +72,9 @@ Scene make_scene(std::uint64_t seed, Placement placement) {
 
   // The feature, a point e on it and a normal n in its cone (box frame), from the sign of each
   // axis and which axes are free.
-  const auto feature = static_cast<Feature>(rng.integer(0, 2));
+  const auto feature = static_cast<BesideFeature>(rng.integer(0, 2));
   s.feature = feature;
-  const int free_axes = feature == Feature::Face ? 2 : feature == Feature::Edge ? 1 : 0;
+  const int free_axes = feature == BesideFeature::Face ? 2 : feature == BesideFeature::Edge ? 1 : 0;
   const int first = rng.integer(0, 2);
   Vec3 e, n = Vec3::Zero();
   for (int k = 0; k < 3; ++k) {
@@ -116,8 +116,8 @@ Scene make_scene(std::uint64_t seed, Placement placement) {
 
 // One argument order: `flip` puts the curved shape first, which turns the normal round.
 template <class Result>
-void expect_exact(const Scene& s, const Result& r, bool flip, double far_rounding) {
-  const double tolerance = 1e-9 * s.size + far_rounding;
+void expect_exact(const BesideScene& s, const Result& r, bool flip, double beside_far_rounding) {
+  const double tolerance = 1e-9 * s.size + beside_far_rounding;
   const Vec3 normal = flip ? Vec3(-s.normal) : s.normal;
   const Vec3 on_polyhedral = s.contact, on_curved = s.contact + s.gap * s.normal;
   const Vec3 expected_a = flip ? on_curved : on_polyhedral;
@@ -138,15 +138,15 @@ void expect_exact(const Scene& s, const Result& r, bool flip, double far_roundin
   EXPECT_LE((r.point_b - expected_b).norm(), tolerance) << s.note << order;
 }
 
-double far_rounding(const Scene& s) {
+double beside_far_rounding(const BesideScene& s) {
   return oracle::world_rounding(s.pose_polyhedral.translation);
 }
 
 TEST(CurvedBesideFeature, DistanceAndNormalAreExactInBothOrders) {
   const int count = oracle::sweep_count(600, 200);
   for (int i = 0; i < count; ++i) {
-    const Scene s = make_scene(9100 + i, Placement::Apart);
-    const double rounding = far_rounding(s);
+    const BesideScene s = make_scene(9100 + i, Placement::Apart);
+    const double rounding = beside_far_rounding(s);
     expect_exact(s, mink::distance(s.polyhedral, s.pose_polyhedral, s.curved, s.pose_curved), false,
                  rounding);
     expect_exact(s, mink::distance(s.curved, s.pose_curved, s.polyhedral, s.pose_polyhedral), true,
@@ -163,7 +163,7 @@ TEST(CurvedBesideFeature, DepthAndNormalAreExactInBothOrders) {
   const int count = oracle::sweep_count(200, 40);
   int confirmed = 0;
   for (int i = 0; i < count; ++i) {
-    const Scene s = make_scene(19100 + i, Placement::Overlapping);
+    const BesideScene s = make_scene(19100 + i, Placement::Overlapping);
     // The oracle's least separation: n's own is the depth, so n is the normal when no direction
     // does better.
     const oracle::CurvedShape box{oracle::CurvedKind::Box, 0, 0, s.half.cast<oracle::Real>()};
@@ -177,7 +177,7 @@ TEST(CurvedBesideFeature, DepthAndNormalAreExactInBothOrders) {
                                              s.pose_curved.translation.cast<oracle::Real>()});
     if (static_cast<double>(least.depth) < -s.gap - 1e-12 * s.size) continue;
     ++confirmed;
-    const double rounding = far_rounding(s);
+    const double rounding = beside_far_rounding(s);
     expect_exact(s, mink::contact(s.polyhedral, s.pose_polyhedral, s.curved, s.pose_curved), false,
                  rounding);
     expect_exact(s, mink::contact(s.curved, s.pose_curved, s.polyhedral, s.pose_polyhedral), true,
@@ -195,8 +195,8 @@ TEST(CurvedBesideFeature, TouchingPointsAreTheContact) {
   // corner any normal of its cone is right: there the minimum is flat to the gap).
   const int count = oracle::sweep_count(300, 100);
   for (int i = 0; i < count; ++i) {
-    const Scene s = make_scene(29100 + i, Placement::Touching);
-    const double tolerance = 1e-9 * s.size + far_rounding(s);
+    const BesideScene s = make_scene(29100 + i, Placement::Touching);
+    const double tolerance = 1e-9 * s.size + beside_far_rounding(s);
     for (const bool flip : {false, true}) {
       const std::string order = flip ? " (curved shape first)" : " (polyhedral shape first)";
       const mink::ContactResult r =
@@ -206,7 +206,7 @@ TEST(CurvedBesideFeature, TouchingPointsAreTheContact) {
       EXPECT_LE(r.depth, tolerance) << s.note << order;
       EXPECT_LE((r.point_a - s.contact).norm(), tolerance) << s.note << order;
       EXPECT_LE((r.point_b - s.contact).norm(), tolerance) << s.note << order;
-      if (s.feature == Feature::Face) {
+      if (s.feature == BesideFeature::Face) {
         EXPECT_LE(oracle::angle(r.normal, flip ? Vec3(-s.normal) : s.normal), 1e-9)
             << s.note << order;
       }

@@ -29,7 +29,7 @@ using mink::Pose;
 using mink::Shape;
 using mink::Vec3;
 
-struct Scene {
+struct KinkScene {
   Shape solid, ellipsoid;
   Pose pose_solid, pose_ellipsoid;
   Vec3 contact;    // e: on the cone or cylinder, world frame
@@ -41,7 +41,7 @@ struct Scene {
 
 // Places an ellipsoid of random radii and orientation with its support point along -normal at
 // contact + gap * normal.
-void place_ellipsoid(oracle::Rng& rng, Scene& s) {
+void place_ellipsoid(oracle::Rng& rng, KinkScene& s) {
   const Vec3 radii(rng.uniform(0.05, 1), rng.uniform(0.05, 1), rng.uniform(0.05, 1));
   s.ellipsoid = Shape::ellipsoid(radii).value();
   const mink::Quat q = rng.rotation();
@@ -67,16 +67,16 @@ Solid random_solid(oracle::Rng& rng) {
   return solid;
 }
 
-void set_contact(const Solid& solid, const Vec3& e, const Vec3& n, Scene& s) {
+void set_contact(const Solid& solid, const Vec3& e, const Vec3& n, KinkScene& s) {
   s.pose_solid = solid.pose;
   s.contact = solid.pose.apply(e);
   s.normal = solid.pose.rotate(n);
   s.size = std::hypot(solid.radius, solid.half_height);
 }
 
-Scene slant_scene(std::uint64_t seed) {
+KinkScene slant_scene(std::uint64_t seed) {
   oracle::Rng rng(seed);
-  Scene s;
+  KinkScene s;
   const Solid solid = random_solid(rng);
   const double radius = solid.radius, half_height = solid.half_height;
   s.solid = Shape::cone(radius, half_height).value();
@@ -96,9 +96,9 @@ Scene slant_scene(std::uint64_t seed) {
   return s;
 }
 
-Scene rim_scene(std::uint64_t seed) {
+KinkScene rim_scene(std::uint64_t seed) {
   oracle::Rng rng(seed);
-  Scene s;
+  KinkScene s;
   const Solid solid = random_solid(rng);
   const double radius = solid.radius, half_height = solid.half_height;
   s.solid = Shape::cylinder(radius, half_height).value();
@@ -117,15 +117,15 @@ Scene rim_scene(std::uint64_t seed) {
   return s;
 }
 
-double far_rounding(const Scene& s) {
+double kink_far_rounding(const KinkScene& s) {
   return oracle::world_rounding(s.pose_solid.translation);
 }
 
 // One argument order: `flip` puts the ellipsoid first, which turns the normal round. Touching
 // pairs answer both points at the contact.
 template <class Result>
-void expect_exact(const Scene& s, const Result& r, bool flip, bool touching) {
-  const double tolerance = 1e-9 * s.size + far_rounding(s);
+void expect_exact(const KinkScene& s, const Result& r, bool flip, bool touching) {
+  const double tolerance = 1e-9 * s.size + kink_far_rounding(s);
   const std::string order = flip ? " (ellipsoid first)" : " (ellipsoid second)";
   const Vec3 on_solid = s.contact;
   const Vec3 on_ellipsoid = touching ? s.contact : Vec3(s.contact + s.gap * s.normal);
@@ -143,7 +143,7 @@ void expect_exact(const Scene& s, const Result& r, bool flip, bool touching) {
 TEST(CurvedKink, EllipsoidTouchingAConeSlant) {
   const int count = oracle::sweep_count(300, 100);
   for (int i = 0; i < count; ++i) {
-    const Scene s = slant_scene(54100 + i);
+    const KinkScene s = slant_scene(54100 + i);
     expect_exact(s, mink::contact(s.solid, s.pose_solid, s.ellipsoid, s.pose_ellipsoid), false,
                  true);
     expect_exact(s, mink::contact(s.ellipsoid, s.pose_ellipsoid, s.solid, s.pose_solid), true,
@@ -155,7 +155,7 @@ TEST(CurvedKink, EllipsoidTouchingAConeSlant) {
 TEST(CurvedKink, EllipsoidBesideACylinderRimNearItsAxis) {
   const int count = oracle::sweep_count(300, 100);
   for (int i = 0; i < count; ++i) {
-    const Scene s = rim_scene(54500 + i);
+    const KinkScene s = rim_scene(54500 + i);
     expect_exact(s, mink::distance(s.solid, s.pose_solid, s.ellipsoid, s.pose_ellipsoid), false,
                  false);
     expect_exact(s, mink::distance(s.ellipsoid, s.pose_ellipsoid, s.solid, s.pose_solid), true,

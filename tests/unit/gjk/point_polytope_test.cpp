@@ -19,7 +19,9 @@
 #include "oracle/penetration.hpp"
 #include "oracle/random.hpp"
 
-namespace {
+// Named, not anonymous: the tests compile in unity batches (tests/CMakeLists.txt), where the
+// names of this file's helpers (kinds, cases) would clash with other files' helpers.
+namespace point_polytope_test {
 
 using mink::Pose;
 using mink::Vec3;
@@ -344,4 +346,4 @@ TEST(PointPolytope, CentreOnTheSurfaceOrAnEdge) {
   }
 }
 
-}  // namespace
+}  // namespace point_polytope_test

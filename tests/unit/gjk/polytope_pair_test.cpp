@@ -9,6 +9,7 @@
 
 #include "mink/mink.hpp"
 #include "oracle/brute_force.hpp"
+#include "oracle/contact_check.hpp"
 #include "oracle/random.hpp"
 
 namespace {
@@ -30,14 +31,6 @@ std::vector<Vec3> random_points(oracle::Rng& rng, int n) {
     }
   }
   return points;
-}
-
-std::vector<oracle::V3> world_points(const std::vector<Vec3>& points, const Pose& pose) {
-  std::vector<oracle::V3> out;
-  for (const Vec3& p : points)
-    out.push_back(oracle::widen(pose.rotation) * oracle::widen(p) +
-                  oracle::widen(pose.translation));
-  return out;
 }
 
 /// A point of `points` farthest along u (world frame, long double).
@@ -73,12 +66,13 @@ TEST(PolytopePair, CommonPointAgreesWithBruteForceAndWithGjk) {
     const double size = a->bounding_radius() + b->bounding_radius();
     const double gaps[] = {-0.3, -0.1, -1e-3, -1e-6, -1e-9, -1e-11, 0, 1e-11, 1e-9, 1e-6, 1e-3};
     const double gap = gaps[i % 11] * size;
-    const oracle::V3 on_a = farthest(world_points(a_points, pa), oracle::widen(u));
-    const oracle::V3 on_b = farthest(world_points(b_points, pb), oracle::widen(Vec3(-u)));
+    const oracle::V3 on_a = farthest(oracle::world_points(a_points, pa), oracle::widen(u));
+    const oracle::V3 on_b = farthest(oracle::world_points(b_points, pb), oracle::widen(Vec3(-u)));
     pb.translation = (on_a - on_b + oracle::widen(u) * oracle::Real(gap)).cast<double>();
 
-    const double distance = double(
-        oracle::polytope_pair(world_points(a_points, pa), world_points(b_points, pb)).distance);
+    const double distance = double(oracle::polytope_pair(oracle::world_points(a_points, pa),
+                                                         oracle::world_points(b_points, pb))
+                                       .distance);
     const auto got = mink::intersect(*a, pa, *b, pb);
     const auto plain = mink::intersect(*a_plain, pa, *b_plain, pb);
     ASSERT_EQ(got.status == mink::Status::Intersecting || got.status == mink::Status::Separated,

@@ -22,7 +22,7 @@ using oracle::Real;
 using oracle::Rng;
 using oracle::widen;
 
-struct Case {
+struct SegmentBoxCase {
   mink::Capsule capsule;
   Pose pose_capsule;
   mink::Box box;
@@ -31,8 +31,8 @@ struct Case {
 
 /// A capsule near a box: anywhere around it, or lying along one of its axes (parallel to a face,
 /// the flat minimum) or tilted from one by 1e-12 to 1e-2 rad; sometimes both needles.
-Case random_case(Rng& rng, double far) {
-  Case c;
+SegmentBoxCase random_case(Rng& rng, double far) {
+  SegmentBoxCase c;
   const bool needles = rng.chance(0.2);
   const double thin = needles ? 1e-6 : 1.0;
   c.box.half_extents = Vec3(thin * rng.log_uniform(0.01, 2), thin * rng.log_uniform(0.01, 2),
@@ -57,7 +57,7 @@ Case random_case(Rng& rng, double far) {
   return c;
 }
 
-oracle::Answer expected_of(const Case& c) {
+oracle::Answer expected_of(const SegmentBoxCase& c) {
   const oracle::WorldCapsule capsule =
       oracle::make_capsule(c.capsule.radius, c.capsule.half_height, widen(c.pose_capsule.rotation),
                            widen(c.pose_capsule.translation));
@@ -74,7 +74,7 @@ TEST(SegmentBox, CapsuleBoxMatchesTheConvexMinimum) {
     const std::uint64_t seed = base + i;
     SCOPED_TRACE(oracle::seed_note(seed));
     Rng rng(seed);
-    const Case c = random_case(rng, rng.chance(0.2) ? 1e5 : 5);
+    const SegmentBoxCase c = random_case(rng, rng.chance(0.2) ? 1e5 : 5);
     const double size = c.capsule.bounding_radius() + c.box.bounding_radius();
     const double far = c.pose_box.translation.norm();
     const oracle::Answer expected = expected_of(c);
@@ -115,7 +115,7 @@ TEST(SegmentBox, SegmentsAndRoundedBoxesTakeTheSamePath) {
   // A segment is a capsule of radius 0; a rounded box adds its radius to the gap.
   Rng rng(4901);
   for (int i = 0; i < 200; ++i) {
-    const Case c = random_case(rng, 5);
+    const SegmentBoxCase c = random_case(rng, 5);
     const Vec3 half = c.capsule.half_height * Vec3::UnitZ();
     const mink::Segment segment{-half, half};
     const double rounding = 0.01;
@@ -326,7 +326,7 @@ TEST(SegmentBox, AnEndJustBeyondAFacePlaneKeepsItsGapDirection) {
 TEST(SegmentBox, FloatAgreesWithDouble) {
   Rng rng(4902);
   for (int i = 0; i < 100; ++i) {
-    const Case c = random_case(rng, 2);
+    const SegmentBoxCase c = random_case(rng, 2);
     const auto d = mink::distance(c.capsule, c.pose_capsule, c.box, c.pose_box);
     const mink::CapsuleT<float> capsule{static_cast<float>(c.capsule.radius),
                                         static_cast<float>(c.capsule.half_height)};

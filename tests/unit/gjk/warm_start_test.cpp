@@ -8,6 +8,7 @@
 
 #include "mink/mink.hpp"
 #include "oracle/brute_force.hpp"
+#include "oracle/contact_check.hpp"
 #include "oracle/random.hpp"
 
 namespace {
@@ -15,12 +16,6 @@ namespace {
 using mink::Pose;
 using mink::Vec3;
 using oracle::widen;
-
-std::vector<oracle::V3> world_points(const std::vector<Vec3>& local, const Pose& pose) {
-  std::vector<oracle::V3> out;
-  for (const Vec3& p : local) out.push_back(widen(pose.apply(p)));
-  return out;
-}
 
 TEST(GjkWarmStart, CoherentMotionMatchesOracleAndSavesIterations) {
   const std::uint64_t seed = 7100;
@@ -42,7 +37,8 @@ TEST(GjkWarmStart, CoherentMotionMatchesOracleAndSavesIterations) {
     const Pose pose_b = Pose::from(Vec3(2.5 - 0.024 * frame, 0.2, -0.1), qb);
     const auto warm = mink::distance(a, pose_a, b, pose_b, mink::Tolerances{}, &cache);
     const auto cold = mink::distance(a, pose_a, b, pose_b);
-    const auto expected = oracle::polytope_pair(world_points(pa, pose_a), world_points(pb, pose_b));
+    const auto expected =
+        oracle::polytope_pair(oracle::world_points(pa, pose_a), oracle::world_points(pb, pose_b));
     const double expected_distance = double(expected.distance);
     ASSERT_EQ(warm.intersect, cold.intersect) << "frame " << frame;
     if (expected_distance > 1e-9) {

@@ -97,7 +97,7 @@ TEST(ConvexHull, FuzzyCubeSurface) {
   EXPECT_GT(t.vertices.size(), 8u);
 }
 
-struct Case {
+struct HullCase {
   std::string name;
   std::vector<Vec3> points;
   HullStatus status;
@@ -205,15 +205,15 @@ std::vector<Vec3> needle(const std::string& name) {
           Vec3(-5469.8846962791904, 671.08909197402465, 5448.5238584832869)};
 }
 
-std::vector<Case> cases() {
+std::vector<HullCase> cases() {
   using namespace hull_inputs;
-  std::vector<Case> c;
+  std::vector<HullCase> c;
   c.push_back({"ball", in_ball(5000, 11), HullStatus::Full});
   c.push_back({"cube", in_cube(5000, 12), HullStatus::Full});
   c.push_back({"sphere", on_sphere(3000, 13), HullStatus::Full});
   c.push_back({"cube_surface", on_cube_surface(3000, 14, false), HullStatus::Full});
-  c.push_back(
-      {"rotated_cube_surface", rotated(on_cube_surface(3000, 15, false), 15), HullStatus::Full});
+  c.push_back({"rotated_cube_surface", hull_inputs::rotated(on_cube_surface(3000, 15, false), 15),
+               HullStatus::Full});
   c.push_back({"near_pairs_1e-13", near_pairs(1000, 1e-13, 16), HullStatus::Full});
   c.push_back({"near_pairs_1e-9", near_pairs(1000, 1e-9, 17), HullStatus::Full});
   c.push_back({"lens", lens(2000, 1e5, 18), HullStatus::Full});
@@ -244,7 +244,7 @@ std::vector<Case> cases() {
     c.push_back({"flat", p, HullStatus::Flat});
   }
   {
-    auto p = rotated(in_ball(1000, 25), 25);
+    auto p = hull_inputs::rotated(in_ball(1000, 25), 25);
     for (Vec3& v : p) v[1] = 0.25 * v[0] - 0.5 * v[2] + 3;
     c.push_back({"flat_tilted_rounded", p, HullStatus::Flat});
   }
@@ -294,7 +294,7 @@ std::vector<Case> cases() {
 }
 
 TEST(ConvexHull, AllCasesHoldTheInvariants) {
-  for (const Case& c : cases()) {
+  for (const HullCase& c : cases()) {
     SCOPED_TRACE(c.name);
     const ConvexHull h = build(c.points);
     EXPECT_EQ(h.status, c.status) << mink::to_string(h.status);
@@ -352,12 +352,13 @@ TEST(ConvexHull, InvariantsHoldAtEveryTolerance) {
   // Large tolerances merge more (greedily, so not always as much as they could), and the
   // result stays flat within the tolerance, convex and closed.
   using namespace hull_inputs;
-  const std::vector<std::vector<Vec3>> inputs{on_sphere(1500, 1),
-                                              in_ball(1500, 2),
-                                              on_cube_surface(1000, 3, true, 1e-6),
-                                              rotated(on_cube_surface(1000, 4, false), 4),
-                                              lens(1000, 1e3, 5),
-                                              near_pairs(500, 1e-5, 6)};
+  const std::vector<std::vector<Vec3>> inputs{
+      on_sphere(1500, 1),
+      in_ball(1500, 2),
+      on_cube_surface(1000, 3, true, 1e-6),
+      hull_inputs::rotated(on_cube_surface(1000, 4, false), 4),
+      lens(1000, 1e3, 5),
+      near_pairs(500, 1e-5, 6)};
   for (const auto& p : inputs) {
     for (const double rel : {0.0, 1e-12, 1e-8, 1e-5, 1e-3, 1e-2}) {
       HullOptions o;

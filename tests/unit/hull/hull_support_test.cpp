@@ -135,7 +135,7 @@ std::vector<Vec3> noisy_rims(int n, unsigned seed, double noise) {
   return p;
 }
 
-struct Case {
+struct SupportCase {
   std::string name;
   std::vector<Vec3> points;
   int directions;
@@ -147,7 +147,7 @@ double dot(const Vec3& p, const Vec3& d) {
 
 /// Checks `directions` random directions cold and warm on one point set; `worst` gets the largest
 /// shortfall of the climb below the input points' maximum, in units of eps R |d|.
-void check_case(const Case& c, unsigned seed, double& worst) {
+void check_case(const SupportCase& c, unsigned seed, double& worst) {
   SCOPED_TRACE(c.name);
   worst = 0;
   const auto hull = mink::build_convex_hull(c.points);
@@ -205,8 +205,8 @@ void check_case(const Case& c, unsigned seed, double& worst) {
   }
 }
 
-std::vector<Case> default_cases() {
-  std::vector<Case> cases;
+std::vector<SupportCase> default_cases() {
+  std::vector<SupportCase> cases;
   // Spheres: every point is a vertex; directions spread so that the run stays short.
   for (int n : {4, 5, 8, 16, 31, 32, 33, 64, 100, 256, 1000, 4096, 10000, 100000})
     cases.push_back(
@@ -228,7 +228,7 @@ std::vector<Case> default_cases() {
 
 TEST(HullSupport, ClimbEqualsBruteForceColdAndWarm) {
   int total = 0;
-  for (const Case& c : default_cases()) {
+  for (const SupportCase& c : default_cases()) {
     double worst = 0;
     check_case(c, 77, worst);
     if (HasFatalFailure()) return;
@@ -369,7 +369,7 @@ TEST(HullSupport, QueriesMatchPlainPolytopes) {
 // answers), then builds its hull and climbs: answers are then input points whose support value is
 // the maximum within the hull's tolerance. Small polytopes never switch.
 TEST(HullSupport, PolytopeSwitchesToItsHullAfterManyQueries) {
-  std::vector<Case> cases;
+  std::vector<SupportCase> cases;
   auto ball = sphere(500, 31);
   for (int i = 0; i < 300; ++i) ball.push_back(0.5 * ball[std::size_t(i)]);  // interior
   for (int i = 0; i < 50; ++i) ball.push_back(ball[std::size_t(i)]);         // duplicates
@@ -379,7 +379,7 @@ TEST(HullSupport, PolytopeSwitchesToItsHullAfterManyQueries) {
   cases.push_back({"flat 300", flat(300, 33), 20000});
   cases.push_back({"segment 200", segment(200, 34), 20000});
   cases.push_back({"needle 300", needle(300, 35), 20000});
-  for (const Case& c : cases) {
+  for (const SupportCase& c : cases) {
     SCOPED_TRACE(c.name);
     const auto polytope = mink::Polytope::make(c.points);
     ASSERT_TRUE(polytope.has_value());

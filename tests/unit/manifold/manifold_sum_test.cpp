@@ -16,7 +16,9 @@
 #include "mink/mink.hpp"
 #include "oracle/random.hpp"
 
-namespace {
+// Named, not anonymous: the tests compile in unity batches (tests/CMakeLists.txt), where the
+// names of this file's helpers (kinds, cases) would clash with other files' helpers.
+namespace manifold_sum_test {
 
 using mink::Pose;
 using mink::Shape;
@@ -316,4 +318,4 @@ TEST(ManifoldFeature, PointsApartByRoundingAreOne) {
   EXPECT_EQ(out.count, 2);
 }
 
-}  // namespace
+}  // namespace manifold_sum_test
