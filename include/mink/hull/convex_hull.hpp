@@ -183,8 +183,9 @@ struct ConvexHull {
   std::uint32_t neighbor_face(std::uint32_t h) const { return half_edges[half_edges[h].twin].face; }
 };
 
-/// The convex hull of `points`. Errors: no points, a NaN or infinite coordinate, more than 2^28
-/// points, options out of range; and internal errors (a cap hit), which would be bugs.
+/// The convex hull of `points`. Errors: no points, a NaN or infinite coordinate, a coordinate
+/// above 1e100, more than 2^28 points, options out of range; and internal errors (a cap hit), which
+/// would be bugs.
 Expected<ConvexHull> build_convex_hull(std::span<const Vec3> points,
                                        const HullOptions& options = {});
 
