@@ -10,6 +10,7 @@
 #include <optional>
 #include <utility>
 
+#include "mink/query/scale_range.hpp"
 #include "mink/query/shape_queries.hpp"
 #include "mink/support/rounded.hpp"
 
@@ -139,80 +140,21 @@ auto dispatch(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& po
   return query(a, pose_a, b, pose_b);
 }
 
-/// Lengths at which the algorithms are exact: GJK's simplex tests multiply up to six of them, and
-/// below about 1e-50 or above 1e51 those products underflow or overflow (docs/benchmarks.md,
-/// "Stop 57"). 2^-120 to 2^120 leaves a wide margin on both sides.
-inline constexpr double kSmallestLength = 0x1p-120, kLargestShape = 0x1p120;
-
-/// For a pair outside that range, the e for which the pair scaled by 2^-e has its lengths near 1:
-/// a pair whose shapes and offset (B's origin from A's) are all below kSmallestLength, or whose
-/// shapes are larger than kLargestShape. Nothing otherwise, and for non-finite input (the queries
-/// report it). A tiny pair far apart, or a huge one close by, is no better scaled: its ratio of
-/// sizes stays.
-inline std::optional<int> out_of_range_exponent(const Shape& a, const Pose& pose_a, const Shape& b,
-                                                const Pose& pose_b) {
-  const double size = std::max(a.bounding_radius(), b.bounding_radius());
-  const double offset = (pose_b.translation - pose_a.translation).cwiseAbs().maxCoeff();
-  if (!std::isfinite(size) || !std::isfinite(offset)) return std::nullopt;
-  const double largest = std::max(size, offset);
-  // -1020: 2^1074, which a subnormal length would ask for, overflows.
-  if (largest > 0 && largest < kSmallestLength) return std::max(std::ilogb(largest), -1020);
-  if (size > kLargestShape) return std::ilogb(size);
-  return std::nullopt;
-}
-
-/// An answer's pair of points, computed scaled about A's origin, in the world.
-template <class Result>
-void points_back(Result& r, double back, const Vec3& origin) {
-  r.point_a = back * r.point_a + origin;
-  r.point_b = back * r.point_b + origin;
-}
-
-/// Lengths of an answer computed scaled, multiplied by `back` (a power of two, exact) and its
-/// points shifted from A's origin to the world.
-inline void scale_back(IntersectResult&, double, const Vec3&) {}
-
-inline void scale_back(DistanceResult& r, double back, const Vec3& origin) {
-  r.distance *= back;
-  r.error_bound *= back;
-  if (r.status != Status::InvalidInput && !r.intersect) points_back(r, back, origin);
-}
-
-inline void scale_back(ContactResult& r, double back, const Vec3& origin) {
-  r.distance *= back;
-  r.depth *= back;
-  r.error_bound *= back;
-  if (r.status != Status::InvalidInput) points_back(r, back, origin);
-}
-
-inline void scale_back(ManifoldResult& r, double back, const Vec3& origin) {
-  r.distance *= back;
-  r.depth *= back;
-  r.error_bound *= back;
-  for (int i = 0; i < r.count; ++i) {
-    points_back(r.points[i], back, origin);
-    r.points[i].depth *= back;
-  }
-}
-
 /// Runs `solve(a, pose_a, b, pose_b, factor)` with factor 1, or for a pair outside the range of
-/// lengths (out_of_range_exponent()) on the pair scaled by a power of two `factor` about A's
-/// origin, and scales the answer back: flags, normals and iteration counts do not change with
-/// the scale, and the scaling itself is exact. A pair whose scaled copies cannot be made is solved
-/// as it is.
+/// lengths (query/scale_range.hpp) on Shape::scaled() copies, and scales the answer back. Before
+/// the dispatch, since the concrete cores of polytopes and hulls are held by pointer and have no
+/// copies of their own. A pair whose scaled copies cannot be made is solved as it is.
 template <class Solve>
 auto solve_in_range(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
                     Solve&& solve) {
-  if (const std::optional<int> exponent = out_of_range_exponent(a, pose_a, b, pose_b)) {
-    const double factor = std::ldexp(1.0, -*exponent);
-    auto scaled_a = a.scaled(factor), scaled_b = b.scaled(factor);
-    if (scaled_a && scaled_b) {
-      const Pose at_a{pose_a.rotation, Vec3::Zero()};
-      const Pose at_b{pose_b.rotation, Vec3(factor * (pose_b.translation - pose_a.translation))};
-      auto result = solve(scaled_a.value(), at_a, scaled_b.value(), at_b, factor);
-      scale_back(result, std::ldexp(1.0, *exponent), pose_a.translation);
-      return result;
-    }
+  if (const std::optional<int> exponent =
+          out_of_range_exponent(a.bounding_radius(), b.bounding_radius(), pose_a, pose_b)) {
+    auto copy = [](const Shape& shape, double factor) -> std::optional<Shape> {
+      auto scaled = shape.scaled(factor);
+      if (!scaled) return std::nullopt;
+      return std::move(scaled).value();
+    };
+    if (auto result = solve_scaled(*exponent, a, pose_a, b, pose_b, copy, solve)) return *result;
   }
   return solve(a, pose_a, b, pose_b, 1.0);
 }

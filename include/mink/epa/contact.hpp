@@ -46,6 +46,7 @@
 #include "mink/manifold/clip_box_pair.hpp"
 #include "mink/query/axial_pair.hpp"
 #include "mink/query/point_solid.hpp"
+#include "mink/query/scale_range.hpp"
 #include "mink/query/segment_box.hpp"
 
 namespace mink {
@@ -96,16 +97,12 @@ template <class S>
   surface_points(on_a, on_b, normal, radius_a, radius_b, origin, result.point_a, result.point_b);
 }
 
-}  // namespace detail
-
-/// Contact between a (at pose_a) and b (at pose_b). `cache` (optional, in/out) warm-starts GJK
-/// from the previous query of the same pair.
+/// contact()'s work, for pairs within the range of lengths (query/scale_range.hpp).
 template <ConvexShape A, ConvexShape B>
-requires std::same_as<typename A::Scalar, typename B::Scalar> ContactResultT<typename A::Scalar>
-contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
-        const PoseT<typename A::Scalar>& pose_b,
-        const TolerancesT<typename A::Scalar>& tolerances = {},
-        GjkCacheT<typename A::Scalar>* cache = nullptr) {
+ContactResultT<typename A::Scalar> contact_in_range(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b, const TolerancesT<typename A::Scalar>& tolerances,
+    GjkCacheT<typename A::Scalar>* cache) {
   using S = typename A::Scalar;
   ContactResultT<S> result;
   if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
@@ -392,6 +389,20 @@ contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
                    result.depth + tolerances.relative_depth * size);
   }
   return result;
+}
+
+}  // namespace detail
+
+/// Contact between a (at pose_a) and b (at pose_b). `cache` (optional, in/out) warm-starts GJK
+/// from the previous query of the same pair.
+template <ConvexShape A, ConvexShape B>
+requires std::same_as<typename A::Scalar, typename B::Scalar> ContactResultT<typename A::Scalar>
+contact(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+        const PoseT<typename A::Scalar>& pose_b,
+        const TolerancesT<typename A::Scalar>& tolerances = {},
+        GjkCacheT<typename A::Scalar>* cache = nullptr) {
+  return detail::solve_in_scale_range<&detail::contact_in_range<A, B>>(a, pose_a, b, pose_b,
+                                                                       tolerances, cache);
 }
 
 }  // namespace mink

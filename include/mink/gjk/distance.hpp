@@ -42,6 +42,7 @@
 #include "mink/gjk/separation.hpp"
 #include "mink/query/box_box.hpp"
 #include "mink/query/point_solid.hpp"
+#include "mink/query/scale_range.hpp"
 #include "mink/query/segment_box.hpp"
 
 namespace mink {
@@ -105,16 +106,12 @@ template <class S>
   surface_points(on_a, on_b, normal, radius_a, radius_b, origin, result.point_a, result.point_b);
 }
 
-}  // namespace detail
-
-/// Distance between a (at pose_a) and b (at pose_b), with closest points and the normal.
-/// `cache` (optional, in/out) warm-starts GJK from the previous query of the same pair.
+/// distance()'s work, for pairs within the range of lengths (query/scale_range.hpp).
 template <ConvexShape A, ConvexShape B>
-requires std::same_as<typename A::Scalar, typename B::Scalar> DistanceResultT<typename A::Scalar>
-distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
-         const PoseT<typename A::Scalar>& pose_b,
-         const TolerancesT<typename A::Scalar>& tolerances = {},
-         GjkCacheT<typename A::Scalar>* cache = nullptr) {
+DistanceResultT<typename A::Scalar> distance_in_range(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b, const TolerancesT<typename A::Scalar>& tolerances,
+    GjkCacheT<typename A::Scalar>* cache) {
   using S = typename A::Scalar;
   DistanceResultT<S> result;
   if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
@@ -241,6 +238,20 @@ distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   result.status = cores.status;
   result.error_bound = std::max(S(0), gjk.upper - cores.lower);
   return result;
+}
+
+}  // namespace detail
+
+/// Distance between a (at pose_a) and b (at pose_b), with closest points and the normal.
+/// `cache` (optional, in/out) warm-starts GJK from the previous query of the same pair.
+template <ConvexShape A, ConvexShape B>
+requires std::same_as<typename A::Scalar, typename B::Scalar> DistanceResultT<typename A::Scalar>
+distance(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+         const PoseT<typename A::Scalar>& pose_b,
+         const TolerancesT<typename A::Scalar>& tolerances = {},
+         GjkCacheT<typename A::Scalar>* cache = nullptr) {
+  return detail::solve_in_scale_range<&detail::distance_in_range<A, B>>(a, pose_a, b, pose_b,
+                                                                        tolerances, cache);
 }
 
 }  // namespace mink

@@ -23,6 +23,7 @@
 #include "mink/query/box_box.hpp"
 #include "mink/query/point_solid.hpp"
 #include "mink/query/polytope_pair.hpp"
+#include "mink/query/scale_range.hpp"
 #include "mink/query/segment_box.hpp"
 
 namespace mink {
@@ -59,16 +60,12 @@ template <class S>
   result.status = result.intersect ? Status::Intersecting : Status::Separated;
 }
 
-}  // namespace detail
-
-/// Do a (at pose_a) and b (at pose_b) intersect? `cache` (optional, in/out) warm-starts GJK from
-/// the previous query of the same pair.
+/// intersect()'s work, for pairs within the range of lengths (query/scale_range.hpp).
 template <ConvexShape A, ConvexShape B>
-requires std::same_as<typename A::Scalar, typename B::Scalar> IntersectResultT<typename A::Scalar>
-intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
-          const PoseT<typename A::Scalar>& pose_b,
-          const TolerancesT<typename A::Scalar>& tolerances = {},
-          GjkCacheT<typename A::Scalar>* cache = nullptr) {
+IntersectResultT<typename A::Scalar> intersect_in_range(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b, const TolerancesT<typename A::Scalar>& tolerances,
+    GjkCacheT<typename A::Scalar>* cache) {
   using S = typename A::Scalar;
   IntersectResultT<S> result;
   if ((result.error = detail::query_input_error(a, pose_a, b, pose_b))) return result;
@@ -165,6 +162,20 @@ intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   result.intersect = gjk.status == Status::Intersecting ||
                      (gjk.status == Status::IterationLimit && gjk.upper <= reach);
   return result;
+}
+
+}  // namespace detail
+
+/// Do a (at pose_a) and b (at pose_b) intersect? `cache` (optional, in/out) warm-starts GJK from
+/// the previous query of the same pair.
+template <ConvexShape A, ConvexShape B>
+requires std::same_as<typename A::Scalar, typename B::Scalar> IntersectResultT<typename A::Scalar>
+intersect(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+          const PoseT<typename A::Scalar>& pose_b,
+          const TolerancesT<typename A::Scalar>& tolerances = {},
+          GjkCacheT<typename A::Scalar>* cache = nullptr) {
+  return detail::solve_in_scale_range<&detail::intersect_in_range<A, B>>(a, pose_a, b, pose_b,
+                                                                         tolerances, cache);
 }
 
 }  // namespace mink

@@ -62,6 +62,7 @@
 
 #include "mink/epa/contact.hpp"
 #include "mink/manifold/clip_box_pair.hpp"
+#include "mink/query/scale_range.hpp"
 
 namespace mink {
 
@@ -268,14 +269,23 @@ bool box_manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& 
   return true;
 }
 
-}  // namespace detail
+/// The margin is a length: scaled with the pair (query/scale_range.hpp); feature_tolerance is
+/// relative.
+template <class S>
+struct OptionsAtScale<ManifoldOptionsT<S>> {
+  static ManifoldOptionsT<S> scaled(const ManifoldOptionsT<S>& options, S factor) {
+    ManifoldOptionsT<S> scaled = options;
+    scaled.margin *= factor;
+    return scaled;
+  }
+};
 
-/// Contact manifold between a (at pose_a) and b (at pose_b); see the file comment.
+/// manifold()'s work, for pairs within the range of lengths (query/scale_range.hpp). Inlined:
+/// it is a few checks and a call, and an outlined call cost a box pair 20 instructions.
 template <ConvexShape A, ConvexShape B>
-requires std::same_as<typename A::Scalar, typename B::Scalar> ManifoldResultT<typename A::Scalar>
-manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
-         const PoseT<typename A::Scalar>& pose_b,
-         const ManifoldOptionsT<typename A::Scalar>& options = {}) {
+[[gnu::always_inline]] inline ManifoldResultT<typename A::Scalar> manifold_in_range(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b, const ManifoldOptionsT<typename A::Scalar>& options) {
   using S = typename A::Scalar;
   // One result object for every path, returned by name: a second one moved out would copy its
   // 300 bytes (a few percent of a box pair's time).
@@ -292,6 +302,18 @@ manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
   }
   detail::manifold_from_contact(a, pose_a, b, pose_b, options, result);
   return result;
+}
+
+}  // namespace detail
+
+/// Contact manifold between a (at pose_a) and b (at pose_b); see the file comment.
+template <ConvexShape A, ConvexShape B>
+requires std::same_as<typename A::Scalar, typename B::Scalar> ManifoldResultT<typename A::Scalar>
+manifold(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+         const PoseT<typename A::Scalar>& pose_b,
+         const ManifoldOptionsT<typename A::Scalar>& options = {}) {
+  return detail::solve_in_scale_range<&detail::manifold_in_range<A, B>>(a, pose_a, b, pose_b,
+                                                                        options);
 }
 
 }  // namespace mink

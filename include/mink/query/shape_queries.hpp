@@ -11,9 +11,8 @@
 ///
 /// Scale: a pair whose shapes and offset (B's origin from A's) are all shorter than 2^-120
 /// (about 7.5e-37), or whose shapes are larger than 2^120, is solved as copies scaled by a power
-/// of two to about unit size (Shape::scaled(), an allocation) and its answer scaled back, exactly:
-/// the algorithms multiply up to six lengths, which underflow below about 1e-50 and overflow above
-/// 1e51 (docs/benchmarks.md, "Stop 57"). The templated queries on typed shapes do not do this yet.
+/// of two to about unit size (Shape::scaled(), an allocation) and its answer scaled back, exactly
+/// (query/scale_range.hpp; the templated queries do the same on typed shapes).
 #pragma once
 
 #include "mink/epa/contact.hpp"

@@ -2,7 +2,9 @@
 // ones (computed in long double by tests/oracle/analytic.hpp).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
+#include <vector>
 
 #include "mink/mink.hpp"
 #include "oracle/analytic.hpp"
@@ -110,6 +112,42 @@ TEST(ContactFloat, BoxBoxDepthMatchesSeparatingAxes) {
     }
   }
   EXPECT_GT(penetrating, n / 4);
+}
+
+// Float's range of exact lengths is 2^-15 to 2^15 (query/scale_range.hpp): cubes of half side 2^40
+// and 2^-40, a unit apart or overlapping by a quarter in units of their side, as boxes and as
+// polytopes (copied and rebuilt on every query), answer as the unit cubes do.
+TEST(GjkFloat, CubesFarOutsideFloatsRange) {
+  for (const int exponent : {-40, 40}) {
+    const float s = std::ldexp(1.0f, exponent);
+    SCOPED_TRACE(s);
+    const mink::BoxT<float> box{Vec3F(s, s, s)};
+    std::vector<Vec3F> corners;
+    for (int i = 0; i < 8; ++i)
+      corners.push_back(s * Vec3F(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1));
+    const auto cube = mink::PolytopeT<float>::make(corners).value();
+    const PoseF at = PoseF::from_translation(s * Vec3F(7, -3, 2));
+    const PoseF apart = PoseF::from_translation(s * Vec3F(10, -2.5f, 2.25f));
+    const PoseF over = PoseF::from_translation(s * Vec3F(8.75f, -2.5f, 2.25f));
+    auto check = [&](const auto& a, const auto& b) {
+      const auto d = mink::distance(a, at, b, apart);
+      ASSERT_EQ(d.status, mink::Status::Separated);
+      EXPECT_NEAR(d.distance / s, 1.0f, 1e-5f);
+      EXPECT_NEAR(d.normal.x(), 1.0f, 1e-5f);
+      EXPECT_FALSE(mink::intersect(a, at, b, apart).intersect);
+      const auto c = mink::contact(a, at, b, over);
+      ASSERT_TRUE(c.intersect);
+      EXPECT_NEAR(c.depth / s, 0.25f, 1e-5f);
+      EXPECT_NEAR(c.normal.x(), 1.0f, 1e-5f);
+      EXPECT_NEAR(c.point_a.x() / s, 8.0f, 1e-5f);
+      const auto m = mink::manifold(a, at, b, over);
+      ASSERT_EQ(m.count, 4);
+      for (int i = 0; i < m.count; ++i) EXPECT_NEAR(m.points[i].depth / s, 0.25f, 1e-5f);
+    };
+    check(box, box);
+    check(cube, cube);
+    check(box, cube);
+  }
 }
 
 }  // namespace
