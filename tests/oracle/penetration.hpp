@@ -37,6 +37,14 @@ inline Real support_of(const std::vector<V3>& points, const V3& u) {
   return best;
 }
 
+/// A point of `points` at which support_of(points, u) is reached (the first one, on ties).
+inline V3 support_point_of(const std::vector<V3>& points, const V3& u) {
+  V3 best = points.front();
+  for (const V3& p : points)
+    if (u.dot(p) > u.dot(best)) best = p;
+  return best;
+}
+
 /// Support function of the Minkowski difference A - B: h_A(u) + h_B(-u).
 inline Real support_of_difference(const std::vector<V3>& a, const std::vector<V3>& b, const V3& u) {
   return support_of(a, u) + support_of(b, V3(-u));

@@ -10,6 +10,7 @@
 #include "mink/mink.hpp"
 #include "oracle/brute_force.hpp"
 #include "oracle/contact_check.hpp"
+#include "oracle/penetration.hpp"
 #include "oracle/random.hpp"
 
 namespace {
@@ -31,14 +32,6 @@ std::vector<Vec3> random_points(oracle::Rng& rng, int n) {
     }
   }
   return points;
-}
-
-/// A point of `points` farthest along u (world frame, long double).
-oracle::V3 farthest(const std::vector<oracle::V3>& points, const oracle::V3& u) {
-  oracle::V3 best = points.front();
-  for (const oracle::V3& p : points)
-    if (u.dot(p) > u.dot(best)) best = p;
-  return best;
 }
 
 TEST(PolytopePair, CommonPointAgreesWithBruteForceAndWithGjk) {
@@ -66,8 +59,10 @@ TEST(PolytopePair, CommonPointAgreesWithBruteForceAndWithGjk) {
     const double size = a->bounding_radius() + b->bounding_radius();
     const double gaps[] = {-0.3, -0.1, -1e-3, -1e-6, -1e-9, -1e-11, 0, 1e-11, 1e-9, 1e-6, 1e-3};
     const double gap = gaps[i % 11] * size;
-    const oracle::V3 on_a = farthest(oracle::world_points(a_points, pa), oracle::widen(u));
-    const oracle::V3 on_b = farthest(oracle::world_points(b_points, pb), oracle::widen(Vec3(-u)));
+    const oracle::V3 on_a =
+        oracle::support_point_of(oracle::world_points(a_points, pa), oracle::widen(u));
+    const oracle::V3 on_b =
+        oracle::support_point_of(oracle::world_points(b_points, pb), oracle::widen(Vec3(-u)));
     pb.translation = (on_a - on_b + oracle::widen(u) * oracle::Real(gap)).cast<double>();
 
     const double distance = double(oracle::polytope_pair(oracle::world_points(a_points, pa),

@@ -15,7 +15,6 @@ namespace {
 
 using mink::Pose;
 using mink::Vec3;
-using oracle::widen;
 
 TEST(GjkWarmStart, CoherentMotionMatchesOracleAndSavesIterations) {
   const std::uint64_t seed = 7100;
