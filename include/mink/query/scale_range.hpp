@@ -24,6 +24,7 @@
 #include <optional>
 #include <vector>
 
+#include "mink/gjk/gjk.hpp"
 #include "mink/math/pose.hpp"
 #include "mink/math/vec.hpp"
 #include "mink/query/box_box.hpp"
@@ -319,9 +320,9 @@ struct OptionsAtScale {
 };
 
 /// For the pairs that in_scale_range() turns away, out of line: `Work` (the query's work, without
-/// the range test) on the pair scaled into the range when it is out of it (out_of_range_exponent(),
-/// on the bounding radii and B's offset), its answer scaled back; else on the pair as it is, which
-/// also reports invalid input.
+/// the range test) on the pair scaled into the range when it is valid and out of it
+/// (out_of_range_exponent(), on the bounding radii and B's offset), its answer scaled back; else
+/// on the pair as it is, which reports invalid input.
 template <auto Work, class A, class B, class... Options>
 [[gnu::noinline, gnu::cold]] auto solve_out_of_range(const A& a,
                                                      const PoseT<typename A::Scalar>& pose_a,
@@ -329,6 +330,9 @@ template <auto Work, class A, class B, class... Options>
                                                      const PoseT<typename A::Scalar>& pose_b,
                                                      const Options&... options) {
   using S = typename A::Scalar;
+  // Invalid input as it is: scaled, a negative length of 1e-148 beside one of 1e300 rounds to
+  // -0, which is valid.
+  if (query_input_error(a, pose_a, b, pose_b)) return Work(a, pose_a, b, pose_b, options...);
   S bound_a, bound_b;
   bounding_radii(a, b, bound_a, bound_b);
   if (const std::optional<int> exponent = out_of_range_exponent(bound_a, bound_b, pose_a, pose_b)) {

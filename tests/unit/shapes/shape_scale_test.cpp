@@ -330,6 +330,14 @@ TEST(TypedScale, EdgesOfTheRangeTest) {
   const double inf = std::numeric_limits<double>::infinity();
   const auto huge = mink::intersect(mink::Box{Vec3(1, 1, inf)}, here, speck, unit_x);
   EXPECT_EQ(huge.status, mink::Status::InvalidInput);
+  // A pair out of the range whose scaled copy would be valid: a negative half height of 2e-148
+  // beside a capsule 1e300 long rounds to -0 when scaled by 2^-996 (fuzz/corpus).
+  const mink::Capsule long_one{1, 1e300}, inside_out{432, -2.1408691866764404e-148};
+  const auto flipped = mink::contact(long_one, here, inside_out, unit_x);
+  EXPECT_EQ(flipped.status, mink::Status::InvalidInput);
+  ASSERT_NE(flipped.error, nullptr);
+  EXPECT_NE(std::string(flipped.error).find("capsule half_height"), std::string::npos);
+  EXPECT_EQ(mink::intersect(long_one, here, inside_out, unit_x).status, mink::Status::InvalidInput);
   const Pose nowhere = Pose::from(Vec3(nan, 0, 0), Quat::Identity());
   const auto lost = mink::distance(dust, here, dust, nowhere);
   EXPECT_EQ(lost.status, mink::Status::InvalidInput);
