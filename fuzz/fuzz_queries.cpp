@@ -164,24 +164,36 @@ void check_typed_pair(const A& a, const mink::Pose& pa, const B& b, const mink::
 }
 
 /// One of a few typed pairs, one for each kind of path (separating axes, closed forms, GJK and
-/// EPA, rounded cores), with its fields from the input.
+/// EPA, rounded cores), with its fields from the input. A before B, each in a statement of its
+/// own: the order of a call's arguments is the compiler's, and the corpus must replay anywhere.
 void check_typed(mink::fuzz::FuzzInput& in, const mink::Pose& pa, const mink::Pose& pb,
                  bool checked) {
   switch (in.choice(5)) {
-    case 0:
-      return check_typed_pair(mink::Sphere{in.length()}, pa, mink::Box{in.lengths()}, pb, checked);
-    case 1:
-      return check_typed_pair(mink::Box{in.lengths()}, pa, mink::Box{in.lengths()}, pb, checked);
-    case 2:
-      return check_typed_pair(mink::Capsule{in.length(), in.length()}, pa,
-                              mink::Capsule{in.length(), in.length()}, pb, checked);
+    case 0: {
+      const mink::Sphere a{in.length()};
+      const mink::Box b{in.lengths()};
+      return check_typed_pair(a, pa, b, pb, checked);
+    }
+    case 1: {
+      const mink::Box a{in.lengths()};
+      const mink::Box b{in.lengths()};
+      return check_typed_pair(a, pa, b, pb, checked);
+    }
+    case 2: {
+      const mink::Capsule a{in.length(), in.length()};
+      const mink::Capsule b{in.length(), in.length()};
+      return check_typed_pair(a, pa, b, pb, checked);
+    }
     case 3: {
       const mink::Rounded<mink::Box> a{mink::Box{in.lengths()}, in.length()};
-      return check_typed_pair(a, pa, mink::Cone{in.length(), in.length()}, pb, checked);
+      const mink::Cone b{in.length(), in.length()};
+      return check_typed_pair(a, pa, b, pb, checked);
     }
-    default:
-      return check_typed_pair(mink::Segment{in.vec3(), in.vec3()}, pa,
-                              mink::Ellipsoid{in.lengths()}, pb, checked);
+    default: {
+      const mink::Segment a{in.vec3(), in.vec3()};
+      const mink::Ellipsoid b{in.lengths()};
+      return check_typed_pair(a, pa, b, pb, checked);
+    }
   }
 }
 
