@@ -7,10 +7,9 @@ ContactResult contact(const Shape& a, const Pose& pose_a, const Shape& b, const 
                       const Tolerances& tolerances, GjkCache* cache) {
   return detail::run_query(
       a, pose_a, b, pose_b,
-      [&](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb, double) {
-        return contact<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, qa, cb, qb,
-                                                                               tolerances, cache);
-      });
+      [](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb, const Tolerances& t,
+         GjkCache* c) { return detail::contact_in_range(ca, qa, cb, qb, t, c); },
+      tolerances, cache);
 }
 
 }  // namespace mink

@@ -4,10 +4,7 @@
 // over every pair of core types compile in parallel.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
-#include <optional>
 #include <utility>
 
 #include "mink/query/scale_range.hpp"
@@ -140,40 +137,26 @@ auto dispatch(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& po
   return query(a, pose_a, b, pose_b);
 }
 
-/// Runs `solve(a, pose_a, b, pose_b, factor)` with factor 1, or for a pair outside the range of
-/// lengths (query/scale_range.hpp) on Shape::scaled() copies, and scales the answer back. Before
-/// the dispatch, since the concrete cores of polytopes and hulls are held by pointer and have no
-/// copies of their own. A pair whose scaled copies cannot be made is solved as it is.
-template <class Solve>
-auto solve_in_range(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
-                    Solve&& solve) {
-  if (const std::optional<int> exponent =
-          out_of_range_exponent(a.bounding_radius(), b.bounding_radius(), pose_a, pose_b)) {
-    auto copy = [](const Shape& shape, double factor) -> std::optional<Shape> {
-      auto scaled = shape.scaled(factor);
-      if (!scaled) return std::nullopt;
-      return std::move(scaled).value();
-    };
-    if (auto result = solve_scaled(*exponent, a, pose_a, b, pose_b, copy, solve)) return *result;
-  }
-  return solve(a, pose_a, b, pose_b, 1.0);
+/// `Work` (a typed query's work, detail::*_in_range(), as a captureless lambda) on the pair's
+/// concrete cores (dispatch()).
+template <class Work, class... Options>
+auto work_on_cores(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
+                   const Options&... options) {
+  return dispatch(a, pose_a, b, pose_b,
+                  [&](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb) {
+                    return Work{}(ca, qa, cb, qb, options...);
+                  });
 }
 
-/// The whole run-time query: `query(ca, qa, cb, qb, factor)` on the pair's concrete cores
-/// (dispatch()), scaled into the range of lengths by `factor` where it is out of it
-/// (solve_in_range()). Only lengths among the query's options need the factor (a manifold's
-/// margin).
-template <class Query>
-auto run_query(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
-               Query&& query) {
-  return solve_in_range(
-      a, pose_a, b, pose_b,
-      [&](const Shape& sa, const Pose& pa, const Shape& sb, const Pose& pb, double factor) {
-        return dispatch(sa, pa, sb, pb,
-                        [&](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb) {
-                          return query(ca, qa, cb, qb, factor);
-                        });
-      });
+/// The whole run-time query: work_on_cores(), through the typed queries' range test
+/// (query/scale_range.hpp), which solves a pair outside the range of lengths on
+/// ScaledCopy<Shape> copies (Shape::scaled()) and scales the answer back. The test is on the
+/// Shapes, before the dispatch, since the concrete cores of polytopes and hulls are held by
+/// pointer and have no copies of their own; the typed work then runs without a second one.
+template <class Work, class... Options>
+auto run_query(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b, Work,
+               const Options&... options) {
+  return solve_in_scale_range<&work_on_cores<Work, Options...>>(a, pose_a, b, pose_b, options...);
 }
 
 }  // namespace mink::detail

@@ -7,12 +7,10 @@ ManifoldResult manifold(const Shape& a, const Pose& pose_a, const Shape& b, cons
                         const ManifoldOptions& options) {
   return detail::run_query(
       a, pose_a, b, pose_b,
-      [&](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb, double factor) {
-        ManifoldOptions scaled_options = options;
-        scaled_options.margin *= factor;
-        return manifold<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, qa, cb, qb,
-                                                                                scaled_options);
-      });
+      [](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb, const ManifoldOptions& o) {
+        return detail::manifold_in_range(ca, qa, cb, qb, o);
+      },
+      options);
 }
 
 }  // namespace mink

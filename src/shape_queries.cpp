@@ -7,20 +7,18 @@ IntersectResult intersect(const Shape& a, const Pose& pose_a, const Shape& b, co
                           const Tolerances& tolerances, GjkCache* cache) {
   return detail::run_query(
       a, pose_a, b, pose_b,
-      [&](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb, double) {
-        return intersect<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, qa, cb, qb,
-                                                                                 tolerances, cache);
-      });
+      [](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb, const Tolerances& t,
+         GjkCache* c) { return detail::intersect_in_range(ca, qa, cb, qb, t, c); },
+      tolerances, cache);
 }
 
 DistanceResult distance(const Shape& a, const Pose& pose_a, const Shape& b, const Pose& pose_b,
                         const Tolerances& tolerances, GjkCache* cache) {
   return detail::run_query(
       a, pose_a, b, pose_b,
-      [&](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb, double) {
-        return distance<std::decay_t<decltype(ca)>, std::decay_t<decltype(cb)>>(ca, qa, cb, qb,
-                                                                                tolerances, cache);
-      });
+      [](const auto& ca, const Pose& qa, const auto& cb, const Pose& qb, const Tolerances& t,
+         GjkCache* c) { return detail::distance_in_range(ca, qa, cb, qb, t, c); },
+      tolerances, cache);
 }
 
 }  // namespace mink

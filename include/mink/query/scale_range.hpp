@@ -8,8 +8,9 @@
 /// scaled by a power of two to about unit size, A at the origin, and the answer is scaled back.
 /// Scaling by a power of two is exact, and flags, normals and iteration counts do not change with
 /// the scale. Every query (intersect(), distance(), contact(), manifold()) does this for the
-/// library's shapes, their sums and rounded versions; a caller's own shape types are solved as
-/// they are unless they specialize ScaledCopy.
+/// library's shapes, their sums and rounded versions, and the run-time Shape (its ScaledCopy is in
+/// support/shape.hpp); a caller's own shape types are solved as they are unless they specialize
+/// ScaledCopy.
 ///
 /// How a typed query is laid out: the public function (solve_in_scale_range()) tests the pair's
 /// ScaledCopy lengths and calls either the query's work (`detail::*_in_range()`) or

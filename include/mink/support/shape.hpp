@@ -9,6 +9,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -96,6 +97,21 @@ class Shape {
   std::vector<Core> cores_;
   double radius_ = 0;
   double bounding_radius_ = 0;
+};
+
+template <class T>
+struct ScaledCopy;  // query/scale_range.hpp
+
+/// A Shape's scaled copy for the queries' range of lengths (query/scale_range.hpp): the run-time
+/// queries solve tiny and huge pairs through it, as the typed ones do.
+template <>
+struct ScaledCopy<Shape> {
+  static double length(const Shape& shape) { return shape.bounding_radius(); }
+  static std::optional<Shape> copy(const Shape& shape, double factor) {
+    auto scaled = shape.scaled(factor);
+    if (!scaled) return std::nullopt;
+    return std::move(scaled).value();
+  }
 };
 
 /// Calls `f` on the primitive behind `core`: the shape itself, or the one a shared pointer holds
