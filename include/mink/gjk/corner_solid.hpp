@@ -113,7 +113,7 @@ std::optional<CornerSolidPair<typename A::Scalar>> corner_solid_pair(
       out = CornerSolidPair<S>{on_a, on_b, n, distance};
   };
   // B a solid, A's support point a corner. Taken again, not from `at_normal`: Newton's witness
-  // there may be a point placed from B's (smooth_side_witness()), which the turned support
+  // there may be a point placed from B's (feature_witness()), which the turned support
   // points would never equal.
   with_solid(diff.b, [&](auto solid_core, const auto& solid) {
     using Solid = typename decltype(solid_core)::type;

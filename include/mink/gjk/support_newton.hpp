@@ -25,6 +25,7 @@
 #include <limits>
 
 #include "mink/gjk/gjk.hpp"
+#include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/support_descent.hpp"
 #include "mink/manifold/feature.hpp"
 #include "mink/math/orthogonal.hpp"
@@ -358,8 +359,11 @@ inline constexpr double kFaceSnapReach = 1e-5;
 /// normal is a kink of h in every direction, which neither Newton's steps nor the secant along
 /// one kink reach: a cylinder's rim pressed into a cone's base (at 1e6) kept EPA's normal,
 /// 2.1e-8 rad off the base's, where the base no longer counts as a face to 1e-9 of the size, and
-/// the points 3.5e-8 of the size off the contact. Up to two support calls (counted in
-/// `iterations`) and two features; returns whether `best` moved.
+/// the points 3.5e-8 of the size off the contact. Two edges, one on each core (a cone's side line
+/// across a box's edge), are tried the same way at their common normal, where h has kinks
+/// across both: EPA's normal stayed 1e-9 rad off it, and its points up to 1.3e-5 of the size
+/// off the crossing. Up to two support calls (counted in `iterations`) and two features;
+/// returns whether `best` moved.
 template <ConvexShape A, ConvexShape B>
 bool snap_to_face(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
                   SupportMinimum<typename A::Scalar>& best) {
@@ -372,6 +376,16 @@ bool snap_to_face(const CoreDifference<A, B>& diff, typename A::Scalar size, int
   int count = 0;
   if (feature_a.count >= 3) faces[count++] = unit_of(feature_a.normal);
   if (feature_b.count >= 3) faces[count++] = unit_of(V(-(diff.rotation * feature_b.normal)));
+  if (feature_a.count == 2 && feature_b.count == 2) {
+    const V across = (feature_a.points[1] - feature_a.points[0])
+                         .cross(V(diff.rotation * (feature_b.points[1] - feature_b.points[0])));
+    // Parallel edges have no common normal of their own: any normal of the pair's plane is one.
+    const S sq = across.squaredNorm();
+    if (sq > S(0)) {
+      const V n = unit_of(across, sq, length_of(across, sq));
+      faces[count++] = n.dot(u) < S(0) ? V(-n) : n;
+    }
+  }
   bool moved = false;
   for (int i = 0; i < count; ++i) {
     const V& n = faces[i];
@@ -391,45 +405,97 @@ bool snap_to_face(const CoreDifference<A, B>& diff, typename A::Scalar size, int
   return moved;
 }
 
-/// The witness pair along `best.normal` from the support points there, when one core has a
-/// single point on its support plane (smooth or strictly convex there, or a corner) and the
-/// other does not (a face or an edge, whose support point is one of its corners, not the point
-/// of contact). The single point is the one core's witness; the other's is placed from it by
-/// the value along the normal, onto that core's support plane, and kept only where it lies in
-/// that core's support feature there (in_feature()), a proof that it is a point of that core.
-/// Which core has a single point, and the other's feature, come from the cores' exact support
-/// features (manifold/feature.hpp) within kFeatureWitnessTolerance of the size of the plane:
-/// exact, where probes turning the normal by 1e-7 rad six ways (used before) took a rim seen
-/// within 1e-7 rad of its axis for a face, its support point jumping round the rim, and at one
-/// support call where the probes took seven. GJK's and EPA's points are
-/// combinations of support points from several directions: beside a face, the curved core's
-/// are a chord below its surface, and the face's point lies off the contact by the chord's tilt
-/// (2e-7 of the size, with the normal exact to 1e-13). One support call (counted in
-/// `iterations`) and two features; returns whether `best.vertex` changed.
+/// feature_witness()'s pair where one core has a single point on its support plane along unit
+/// `u` (smooth or strictly convex there, or a corner) and the other does not (a face or an edge,
+/// whose support point is one of its corners, not the point of contact): `pair` (the support
+/// point along u, `value` its support value) keeps the single point, and the other core's point
+/// is placed from it by the value along u, onto that core's support plane, and kept only where
+/// it lies in that core's support feature there (in_feature()), a proof that it is a point of
+/// that core. Returns whether `pair` holds the witness pair.
 template <ConvexShape A, ConvexShape B>
-bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
-                         SupportMinimum<typename A::Scalar>& best) {
+bool witness_beside_single_point(const CoreDifference<A, B>& diff,
+                                 const SupportFeatureT<typename A::Scalar>& feature_a,
+                                 const SupportFeatureT<typename A::Scalar>& feature_b,
+                                 const Vec3T<typename A::Scalar>& u, typename A::Scalar value,
+                                 SimplexVertexT<typename A::Scalar>& pair) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  const V u = best.normal;
+  const S tolerance = S(4) * support_rounding(pair);
+  if (feature_a.count == 1)
+    pair.b = pair.a - value * u;
+  else
+    pair.a = pair.b + value * u;
+  return feature_a.count == 1
+             ? in_feature<S>(feature_b, diff.rotation, diff.translation, u, V(pair.b), tolerance)
+             : in_feature<S>(feature_a, Mat3T<S>::Identity(), V::Zero(), u, V(pair.a), tolerance);
+}
+
+/// feature_witness()'s pair where both cores show an edge on their support planes along unit
+/// `u` (a cone's side line across a box's edge) and the edges cross seen along u: the point of
+/// each edge at the crossing, kept only when the two lie on one line along u and their offset
+/// along it is `value`, the support value there, both to the rounding of their coordinates: a
+/// proof that they are points of their cores' edges on the support planes. Returns whether
+/// `pair` holds the witness pair.
+template <ConvexShape A, ConvexShape B>
+bool witness_at_crossing(const CoreDifference<A, B>& diff,
+                         const SupportFeatureT<typename A::Scalar>& feature_a,
+                         const SupportFeatureT<typename A::Scalar>& feature_b,
+                         const Vec3T<typename A::Scalar>& u, typename A::Scalar value,
+                         SimplexVertexT<typename A::Scalar>& pair) {
+  using S = typename A::Scalar;
+  using V = Vec3T<S>;
+  const CoreSegment<S> edge_a{S(0.5) * (feature_a.points[0] + feature_a.points[1]),
+                              S(0.5) * (feature_a.points[1] - feature_a.points[0])};
+  const CoreSegment<S> edge_b{
+      diff.rotation * (S(0.5) * (feature_b.points[0] + feature_b.points[1])) + diff.translation,
+      diff.rotation * (S(0.5) * (feature_b.points[1] - feature_b.points[0]))};
+  // The edges seen along u: the closest points of their shadows are at the crossing, and their
+  // parameters place the points on the edges themselves.
+  auto across = [&u](const V& x) { return V(x - u.dot(x) * u); };
+  const CoreSegment<S> shadow_a{across(edge_a.centre), across(edge_a.half)};
+  const CoreSegment<S> shadow_b{across(edge_b.centre), across(edge_b.half)};
+  V seen_a, seen_b;
+  S s = S(0), t = S(0);
+  closest_points_of_segments(shadow_a, shadow_b, seen_a, seen_b, &s, &t);
+  pair.a = edge_a.centre + s * edge_a.half;
+  pair.b = edge_b.centre + t * edge_b.half;
+  pair.w = pair.a - pair.b;
+  const S tolerance = S(4) * support_rounding(pair);
+  return is_finite(pair.w) && across(pair.w).norm() <= tolerance &&
+         std::abs(u.dot(pair.w) - value) <= tolerance;
+}
+
+/// The witness pair along `best.normal` from the cores' exact support features there
+/// (manifold/feature.hpp, within kFeatureWitnessTolerance of the size of the support plane):
+///   - one core has a single point there and the other does not: that point and its shift onto
+///     the other's plane (witness_beside_single_point()). Probes turning the normal by 1e-7 rad
+///     six ways (used before the features) took a rim seen within 1e-7 rad of its axis for a
+///     face, its support point jumping round the rim;
+///   - both show an edge (a cone's or cylinder's side line across a box's edge or another side
+///     line): where the edges cross (witness_at_crossing()).
+/// GJK's and EPA's points are combinations of support points from several directions: beside a
+/// face, the curved core's are a chord below its surface, and the face's point lay off the
+/// contact by the chord's tilt (2e-7 of the size, with the normal exact to 1e-13); at crossing
+/// edges, combinations of the edges' ends, up to 1.3e-5 of the size off. One support call
+/// (counted in `iterations`) and two features; returns whether `best.vertex` changed.
+template <ConvexShape A, ConvexShape B>
+bool feature_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
+                     SupportMinimum<typename A::Scalar>& best) {
+  using S = typename A::Scalar;
+  const Vec3T<S> u = best.normal;
   SupportFeatureT<S> feature_a, feature_b;
   core_features(diff, u, S(kFeatureWitnessTolerance) * size, feature_a, feature_b);
-  const bool a_single = feature_a.count == 1, b_single = feature_b.count == 1;
-  if (a_single == b_single) return false;
+  const bool single = (feature_a.count == 1) != (feature_b.count == 1);
+  const bool edges = feature_a.count == 2 && feature_b.count == 2;
+  if (!single && !edges) return false;
   SimplexVertexT<S> pair;
   diff.support(u, pair);
   ++iterations;
   const S value = u.dot(pair.w);
   if (!std::isfinite(value) || !is_finite(pair.w)) return false;
-  const S tolerance = S(4) * support_rounding(pair);
-  if (a_single)
-    pair.b = pair.a - value * u;
-  else
-    pair.a = pair.b + value * u;
-  const bool in_other =
-      a_single ? in_feature<S>(feature_b, diff.rotation, diff.translation, u, V(pair.b), tolerance)
-               : in_feature<S>(feature_a, Mat3T<S>::Identity(), V::Zero(), u, V(pair.a), tolerance);
-  if (!in_other) return false;
+  if (!(single ? witness_beside_single_point(diff, feature_a, feature_b, u, value, pair)
+               : witness_at_crossing(diff, feature_a, feature_b, u, value, pair)))
+    return false;
   pair.w = pair.a - pair.b;
   pair.dir = u;
   best.value = value;
@@ -439,9 +505,10 @@ bool smooth_side_witness(const CoreDifference<A, B>& diff, typename A::Scalar si
 
 /// The witness pair along the unit `normal` where the cores touch or nearly do, which Newton's
 /// steps leave alone (the normal is ill-conditioned there): when one core has a single point on
-/// its support plane, that point and its shift onto the other core's plane, proved a point of it
-/// (smooth_side_witness()), kept when they are within `gap_limit` of each other along the normal
-/// (plus the rounding of their coordinates: 3e-12 at 1e3 from the origin).
+/// its support plane, that point and its shift onto the other core's plane, proved a point of it;
+/// when both show an edge there, the edges' crossing (feature_witness()). Kept when they are
+/// within `gap_limit` of each other along the normal (plus the rounding of their coordinates:
+/// 3e-12 at 1e3 from the origin).
 /// GJK's closest points are combinations of support points from several directions: beside a
 /// face, a chord of the curved core 4e-7 of the size off the contact. Returns whether `on_a` and
 /// `on_b` were set.
@@ -452,7 +519,7 @@ bool touching_witness(const CoreDifference<A, B>& diff, const Vec3T<typename A::
   using S = typename A::Scalar;
   SupportMinimum<S> best;
   best.normal = normal;
-  if (!smooth_side_witness(diff, size, iterations, best) ||
+  if (!feature_witness(diff, size, iterations, best) ||
       !(std::abs(best.value) <= gap_limit + S(4) * support_rounding(best.vertex)))
     return false;
   on_a = best.vertex.a;
@@ -465,13 +532,12 @@ bool touching_witness(const CoreDifference<A, B>& diff, const Vec3T<typename A::
 /// the sum of the bounding radii. A step across a kink (the support point jumps, and by as much
 /// for a turn 16 times smaller) hands over to secant_on_kink(). A face's normal nearby is then
 /// tried (snap_to_face()). The points come from the normal where one core is smooth and the
-/// other not
-/// (smooth_side_witness(), one support call and two features). `best` only improves, and only to a
-/// vertex that is a witness pair: its points' offset vertex.w - value normal across the normal
-/// within `witness_gap` (unit: length). A flat face's support point is one corner of it, not the
-/// point of contact: an answer that keeps one is dropped and `best` left as it came (with its
-/// points from its normal, as above). Returns the number of steps kept, the points' placing
-/// counting one (0 when nothing changed).
+/// other not, or where both show edges that cross (feature_witness(), one support call and two
+/// features). `best` only improves, and only to a vertex that is a witness pair: its points'
+/// offset vertex.w - value normal across the normal within `witness_gap` (unit: length). A flat
+/// face's support point is one corner of it, not the point of contact: an answer that keeps one is
+/// dropped and `best` left as it came (with its points from its normal, as above). Returns the
+/// number of steps kept, the points' placing counting one (0 when nothing changed).
 template <ConvexShape A, ConvexShape B>
 int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
                       typename A::Scalar witness_gap, int max_steps, int& iterations,
@@ -479,10 +545,10 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
   const SupportMinimum<typename A::Scalar> start = best;
   int kept = newton_steps(diff, size, max_steps, iterations, best);
   if (snap_to_face(diff, size, iterations, best)) ++kept;
-  if (smooth_side_witness(diff, size, iterations, best)) ++kept;
+  if (feature_witness(diff, size, iterations, best)) ++kept;
   if (kept > 0 && !((best.vertex.w - best.value * best.normal).norm() <= witness_gap)) {
     best = start;
-    return smooth_side_witness(diff, size, iterations, best) ? 1 : 0;
+    return feature_witness(diff, size, iterations, best) ? 1 : 0;
   }
   return kept;
 }
