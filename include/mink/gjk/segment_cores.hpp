@@ -220,7 +220,7 @@ std::optional<Vec3T<S>> meeting_segments_normal(const CoreSegment<S>& p, const C
   // A segment no longer than the rounding of the terms is a point: it has no direction.
   if (!(pp > kEps * kEps * terms_sq && qq > kEps * kEps * terms_sq)) return std::nullopt;
   const Vec3T<S> along = unit_of(p.half);
-  const Vec3T<S> across = q.half - q.half.dot(along) * along;
+  const Vec3T<S> across = part_across(q.half, along);
   if (!(across.squaredNorm() > S(64 * 64) * kEps * kEps * qq)) return std::nullopt;  // parallel
   Vec3T<S> n = unit_of(Vec3T<S>(along.cross(across)));
   if (n.dot(q.centre - p.centre) < S(0)) n = -n;

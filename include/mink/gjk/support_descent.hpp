@@ -86,10 +86,10 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
   Vec3T<S> previous_direction = Vec3T<S>::Zero(), previous_gradient = Vec3T<S>::Zero();
   while (iterations < max_iterations) {
     const Vec3T<S> u = best.normal;
-    Vec3T<S> gradient = best.vertex.w - u.dot(best.vertex.w) * u;  // tangential part
+    Vec3T<S> gradient = part_across(best.vertex.w, u);  // tangential part
     const bool bundled = have_other;
     if (have_other) {
-      const Vec3T<S> across = other - u.dot(other) * u - gradient;
+      const Vec3T<S> across = part_across(other, u) - gradient;
       const S aa = across.squaredNorm();
       if (aa > S(0)) gradient += std::clamp(-gradient.dot(across) / aa, S(0), S(1)) * across;
     }
@@ -102,7 +102,7 @@ bool descend_support(const CoreDifference<A, B>& diff, typename A::Scalar lower,
       const S beta = std::max(
           S(0), gradient.dot(gradient - previous_gradient) / previous_gradient.squaredNorm());
       const Vec3T<S> conjugate = direction + beta * previous_direction;
-      const Vec3T<S> tangent = conjugate - u.dot(conjugate) * u;
+      const Vec3T<S> tangent = part_across(conjugate, u);
       if (std::isfinite(beta) && tangent.dot(gradient) < S(0)) direction = tangent;
     }
     const S direction_length = direction.norm();

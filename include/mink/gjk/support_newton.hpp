@@ -310,12 +310,12 @@ bool in_feature(const SupportFeatureT<S>& f, const Mat3T<S>& rotation, const Vec
                 const Vec3T<S>& u, const Vec3T<S>& target, S tolerance) {
   using V = Vec3T<S>;
   if (f.count < 1) return false;
-  auto across = [&u](const V& x) { return V(x - u.dot(x) * u); };  // seen along u
   V points[kMaxFeaturePoints];
   for (int i = 0; i < f.count; ++i) points[i] = rotation * f.points[i] + translation;
-  if (f.count == 1) return across(V(target - points[0])).norm() <= tolerance;
+  if (f.count == 1) return part_across(V(target - points[0]), u).norm() <= tolerance;
   if (f.count == 2) {
-    const V edge = across(V(points[1] - points[0])), to = across(V(target - points[0]));
+    const V edge = part_across(V(points[1] - points[0]), u),
+            to = part_across(V(target - points[0]), u);
     if (!(edge.squaredNorm() > S(0))) return to.norm() <= tolerance;
     return (to - nearest_weight<S>(V::Zero(), edge, to) * edge).norm() <= tolerance;
   }
@@ -451,9 +451,8 @@ bool witness_at_crossing(const CoreDifference<A, B>& diff,
       diff.rotation * (S(0.5) * (feature_b.points[1] - feature_b.points[0]))};
   // The edges seen along u: the closest points of their shadows are at the crossing, and their
   // parameters place the points on the edges themselves.
-  auto across = [&u](const V& x) { return V(x - u.dot(x) * u); };
-  const CoreSegment<S> shadow_a{across(edge_a.centre), across(edge_a.half)};
-  const CoreSegment<S> shadow_b{across(edge_b.centre), across(edge_b.half)};
+  const CoreSegment<S> shadow_a{part_across(edge_a.centre, u), part_across(edge_a.half, u)};
+  const CoreSegment<S> shadow_b{part_across(edge_b.centre, u), part_across(edge_b.half, u)};
   V seen_a, seen_b;
   S s = S(0), t = S(0);
   closest_points_of_segments(shadow_a, shadow_b, seen_a, seen_b, &s, &t);
@@ -461,7 +460,7 @@ bool witness_at_crossing(const CoreDifference<A, B>& diff,
   pair.b = edge_b.centre + t * edge_b.half;
   pair.w = pair.a - pair.b;
   const S tolerance = S(4) * support_rounding(pair);
-  return is_finite(pair.w) && across(pair.w).norm() <= tolerance &&
+  return is_finite(pair.w) && part_across(pair.w, u).norm() <= tolerance &&
          std::abs(u.dot(pair.w) - value) <= tolerance;
 }
 

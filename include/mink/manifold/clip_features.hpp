@@ -204,7 +204,7 @@ void clip_feature_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& 
     // m: out of the reference shape, across its edge.
     const Vec3T<S> along = (ref_is_a ? ea / la : eb / lb);
     const Vec3T<S> out_of_ref_shape = ref_is_a ? n : Vec3T<S>(-n);
-    m = out_of_ref_shape - out_of_ref_shape.dot(along) * along;
+    m = part_across(out_of_ref_shape, along);
     if (!(m.norm() > S(0.5))) return;
     m.normalize();
   } else {

@@ -54,6 +54,12 @@ template <class S>
                   (p.z() + s * d.z()) + origin.z());
 }
 
+/// The part of v across unit u: v less its component along u, as v looks seen along u.
+template <class S>
+[[gnu::always_inline]] inline Vec3T<S> part_across(const Vec3T<S>& v, const Vec3T<S>& u) {
+  return v - v.dot(u) * u;
+}
+
 /// a . (b x c), coordinate by coordinate. Through Eigen's cross() and dot(), GCC computed the
 /// cross product in scalars, stored it and loaded it back as a vector for the dot product: a
 /// load that stalls on store forwarding, five of them in each of GJK's tetrahedron tests.

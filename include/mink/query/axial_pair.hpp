@@ -376,7 +376,7 @@ std::optional<AxialDepth<typename A::Scalar>> parallel_axial_depth(
   using V = Vec3T<S>;
   // e: towards the origin's side of A - B's axis, which passes through centre_a - centre_b.
   const V offset = centre_b - centre_a;
-  const V radial = offset - offset.dot(w) * w;
+  const V radial = part_across(offset, w);
   bool on_axis = radial == V::Zero();
   V e;
   if (!on_axis) {
@@ -447,12 +447,12 @@ std::optional<AxialDepth<typename A::Scalar>> tilted_axial_depth(
   // And the plane through A's axis and B's centre (the parallel shapes' plane, file comment): the
   // least depth over the planes is there before the tilt, and where it is a notch narrower than
   // the scan's spacing, the tilt moves it by little.
-  const V across = axis_b - axis_b.dot(w) * w;
+  const V across = part_across(axis_b, w);
   const S phi_axes = std::atan2(across.dot(f0), across.dot(e0));
   depth_at(phi_axes);
   if (failed) return std::nullopt;
   const V offset = centre_b - centre_a;
-  if (const V radial = offset - offset.dot(w) * w; radial != V::Zero()) {
+  if (const V radial = part_across(offset, w); radial != V::Zero()) {
     depth_at(std::atan2(radial.dot(f0), radial.dot(e0)));
     if (failed) return std::nullopt;
   }
