@@ -162,6 +162,32 @@ bool triangle_normal(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Ve
   return true;
 }
 
+/// The unit normal of triangle (p, q, r) from its longest edge, along unit u, and the part of the
+/// third vertex's offset across it, f: u x f. For a sliver, the cross product of two edges is off
+/// by eps times its length over its width in every direction (1e-9 rad across a sliver 12 long and
+/// 3e-6 wide, which, levered by the length, put its ends 4e-10 off the plane); this one is off by
+/// that much only about u, where the lever is the width. False when the triangle has no width.
+template <class S>
+bool sliver_normal(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Vec3T<S>& n) {
+  const Vec3T<S> pq = q - p, qr = r - q, rp = p - r;
+  const S pq_sq = pq.squaredNorm(), qr_sq = qr.squaredNorm(), rp_sq = rp.squaredNorm();
+  // The longest edge, and the offset of the third vertex from the edge's start.
+  Vec3T<S> edge = pq, offset = Vec3T<S>(r - p);
+  if (qr_sq > pq_sq && qr_sq >= rp_sq) {
+    edge = qr;
+    offset = Vec3T<S>(p - q);
+  } else if (rp_sq > pq_sq && rp_sq > qr_sq) {
+    edge = rp;
+    offset = Vec3T<S>(q - r);
+  }
+  const Vec3T<S> u = unit_of(edge);
+  if (!is_finite(u)) return false;
+  const Vec3T<S> cross = u.cross(part_across(offset, u));
+  if (!(cross.squaredNorm() > S(0))) return false;
+  n = unit_of(cross);
+  return is_finite(n);
+}
+
 /// Builds face (i, j, k) of `vertices` in `face`, or returns false if it is degenerate. Its
 /// neighbours are the caller's to link. Built in place: a face assembled on the stack and copied
 /// in costs a store-forwarding stall per field, which was a sixth of EPA's time.
@@ -538,6 +564,10 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   // up to kMaxRegrows times; giving up instead answered depth 0 for a disk sunk 0.33 into it.
   constexpr int kMaxRegrows = 2;
   int regrows = 0;
+  // The last triangle tried, and whether there was one: its plane is the answer when no seed can
+  // be built.
+  Vec3T<S> last_triangle[3];
+  bool have_plane = false;
   while (true) {
     if (ws.vertices.size() == 1) {
       // A point: the farthest support point along the six axis directions.
@@ -608,6 +638,8 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
         // A - B is flat: the side with the smaller support value is the better normal.
         return degenerate(n.dot(up.w) <= -n.dot(down.w) ? n : Vec3T<S>(-n));
       }
+      for (int i = 0; i < 3; ++i) last_triangle[i] = ws.vertices[i].w;
+      have_plane = true;
       // A tetrahedron with the farther apex. The origin lies within the touching tolerance of the
       // triangle, so it may sit just outside it, on the other side: signed face distances make the
       // first expansion push that face out towards the other apex. (A double pyramid with both
@@ -615,7 +647,19 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       ws.vertices.push_back(rise >= fall ? up : down);
     }
     if (seed_polytope(ws)) break;
-    if (regrows++ >= kMaxRegrows) return degenerate(fallback);
+    // No seed: A - B is flat to the rounding of its triangles' normals. A sliver's normal is good
+    // to about eps over the sine of its angle, so a flat A - B can rise off its plane by more than
+    // the flatness tolerance (a triangle and a segment in one plane, 12 long and 3e-6 wide: 4e-10),
+    // while the tetrahedra on it are too flat to seed. The last triangle's plane, its normal taken
+    // again with care (sliver_normal()), on the side of the smaller support value, is then the
+    // answer; the fallback, the line of centres, was any direction (0.67 of the size too deep).
+    if (regrows++ >= kMaxRegrows) {
+      Vec3T<S> n;
+      if (!have_plane || !sliver_normal(last_triangle[0], last_triangle[1], last_triangle[2], n))
+        return degenerate(fallback);
+      const S up = n.dot(support(n).w), down = -n.dot(support(Vec3T<S>(-n)).w);
+      return degenerate(up <= down ? n : Vec3T<S>(-n));
+    }
     ws.faces.clear();
     drop_closest_pair_point(ws.vertices);
   }

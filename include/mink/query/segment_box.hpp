@@ -44,7 +44,8 @@ inline constexpr bool kSegmentBox = (kLineCore<A> && BoxCore<B>::value) ||
 template <class S>
 struct SegmentBoxLocal {
   Vec3T<S> on_segment, on_box, gap;
-  Vec3T<S> along;  ///< d
+  Vec3T<S> along;         ///< d
+  Vec3T<S> half_extents;  ///< h
   S t;
   S terms_sq;  ///< |c|^2 + |d|^2 + |h|^2: the scale of the points' rounding
 };
@@ -77,14 +78,36 @@ std::optional<SegmentBoxLocal<S>> segment_box_local(const Vec3T<S>& c, const Vec
     out.on_box = out.on_segment.cwiseMax(-h).cwiseMin(h);
     out.gap = out.on_segment - out.on_box;
     out.along = d;
+    out.half_extents = h;
     out.t = t;
     out.terms_sq = c.squaredNorm() + d.squaredNorm() + h.squaredNorm();
     if (!is_finite(out.on_segment) || !is_finite(out.gap)) return std::nullopt;
     return out;
   };
+  // f at the cuts, and each value's rounding: each gap coordinate is good to a few ulps of its
+  // own terms, |c_i| + |d_i| + h_i, and f's rounding is about eps times the sum of those times the
+  // gap's coordinates. Not the largest input for every coordinate: a box 4.5e15 long in z made
+  // both ends of a segment 1.7e10 away along x ties, whose middle then gave the gap's direction
+  // 90 degrees off (orthogonal to the segment, segment_box_direction()).
+  S values[8], roundings[8];
+  const Vec3T<S> terms = c.cwiseAbs() + d.cwiseAbs() + h;
+  for (int k = 0; k < count; ++k) {
+    const Vec3T<S> e = excess(cuts[k]);
+    values[k] = e.squaredNorm();
+    roundings[k] = e.cwiseAbs().dot(terms);
+  }
+  const int best_cut = int(std::min_element(values, values + count) - values);
+  const S best = values[best_cut];
+  constexpr S kEps = std::numeric_limits<S>::epsilon();
+  auto within_rounding_of_best = [&](S value, S rounding) {
+    return value - best <= S(8) * kEps * (rounding + roundings[best_cut]);
+  };
   // A stretch whose own minimum lies inside it holds the minimum, the only one (f is convex, and
   // strictly so there). Its value may differ from a cut's by less than f's rounding (tilted by
-  // 1e-7, the least f lies 8e-9 past a cut and 3e-17 of f below it), so it is not compared.
+  // 1e-7, the least f lies 8e-9 past a cut and 3e-17 of f below it), so it need only not exceed
+  // the least cut's value by more than that. A minimum that lies inside only by the rounding of t
+  // does exceed it: a segment 1e-8 rad off a face's plane, its end 8e-9 beyond the face, lies on
+  // the face over half its length (f = 0 there) but took that end, 8e-9 apart.
   for (int k = 0; k + 1 < count; ++k) {
     if (!(cuts[k + 1] > cuts[k])) continue;
     const Vec3T<S> mid = c + (S(0.5) * (cuts[k] + cuts[k + 1])) * d;
@@ -97,31 +120,20 @@ std::optional<SegmentBoxLocal<S>> segment_box_local(const Vec3T<S>& c, const Vec
     }
     if (denominator > S(0)) {
       const S t = numerator / denominator;
-      if (t > cuts[k] && t < cuts[k + 1]) return answer(t);
+      if (t > cuts[k] && t < cuts[k + 1]) {
+        const Vec3T<S> e = excess(t);
+        if (within_rounding_of_best(e.squaredNorm(), e.cwiseAbs().dot(terms))) return answer(t);
+      }
     }
   }
+  if (!std::isfinite(best)) return std::nullopt;
   // Else the minimum is at a cut, or on a stretch where f is flat (the segment parallel to a face
   // or an edge, or through the box): the middle of the cuts where f is least, to its rounding. A
   // segment parallel to a face to rounding (a quarter turn's cosine, 6e-17) would otherwise end at
-  // one end or the other by a coin toss. Each gap coordinate is good to a few ulps of its own
-  // terms, |c_i| + |d_i| + h_i, and f's rounding at a cut is about eps times the sum of those
-  // times the gap's coordinates. Not the largest input for every coordinate: a box 4.5e15 long in
-  // z made both ends of a segment 1.7e10 away along x ties, whose middle then gave the gap's
-  // direction 90 degrees off (orthogonal to the segment, segment_box_direction()).
-  S values[8], roundings[8];
-  const Vec3T<S> terms = c.cwiseAbs() + d.cwiseAbs() + h;
-  for (int k = 0; k < count; ++k) {
-    const Vec3T<S> e = excess(cuts[k]);
-    values[k] = e.squaredNorm();
-    roundings[k] = e.cwiseAbs().dot(terms);
-  }
-  const int best_cut = int(std::min_element(values, values + count) - values);
-  const S best = values[best_cut];
-  if (!std::isfinite(best)) return std::nullopt;
-  constexpr S kEps = std::numeric_limits<S>::epsilon();
+  // one end or the other by a coin toss.
   S first = S(1), last = S(-1);
   for (int k = 0; k < count; ++k) {
-    if (values[k] - best > S(8) * kEps * (roundings[k] + roundings[best_cut])) continue;
+    if (!within_rounding_of_best(values[k], roundings[k])) continue;
     first = std::min(first, cuts[k]);
     last = std::max(last, cuts[k]);
   }
@@ -134,7 +146,8 @@ std::optional<SegmentBoxLocal<S>> segment_box_local(const Vec3T<S>& c, const Vec
 /// cores 1e-11 L apart had a normal 1e-5 rad off, whose support value along it missed the distance
 /// by 1e-5 of the size. The true direction is orthogonal to the segment where its point is
 /// interior, and to every box axis on which the point lies within the box's slab (there the gap
-/// is exactly 0 already); beyond one face only, the gap is along that face's axis exactly.
+/// is exactly 0 already); beyond one face only, the gap is along that face's axis exactly, unless
+/// the point lies on another axis's slab boundary (below).
 template <class S>
 Vec3T<S> segment_box_direction(const SegmentBoxLocal<S>& local, const Vec3T<S>& plain) {
   if (!(std::abs(local.t) < S(1))) return plain;  // an end point: no constraint along the segment
@@ -154,10 +167,36 @@ Vec3T<S> segment_box_direction(const SegmentBoxLocal<S>& local, const Vec3T<S>& 
     else
       within = i;
   }
-  if (beyond < 2) return plain;
+  int edge_axis = -1;  // beyond one face only: the axis of the edge the point lies on, if any
+  if (beyond == 1) {
+    // Beyond one face k, on the boundary of another axis's slab to rounding: the point where a
+    // segment tilted from face k passes over its edge. The distance is stationary past that
+    // crossing, by less than t's rounding (a segment 1.7e-8 rad from the face, 1.9e-9 above its
+    // edge: 3e-17), where the gap leans off face k's axis by the tilt and is orthogonal to the
+    // segment; face k's axis, taken as it stood, was 1.7e-8 rad off, and its support value 4.5e-8
+    // of the size short of the distance.
+    int k = 0;
+    while (local.gap[k] == S(0)) ++k;
+    const S rounding = S(16) * kEps * std::sqrt(local.terms_sq);
+    // An axis along whose slab boundary the segment runs (it lies in that face's plane) has no
+    // edge that the segment passes over.
+    const S still = S(16) * kEps * local.along.norm();
+    for (int i = 0; i < 3; ++i) {
+      if (i == k || !(std::abs(local.along[i]) > still) ||
+          !(local.half_extents[i] - std::abs(local.on_segment[i]) <= rounding))
+        continue;
+      if (edge_axis >= 0) return plain;  // a corner: no single edge
+      edge_axis = i;
+    }
+    if (edge_axis < 0) return plain;
+    within = 3 - k - edge_axis;
+  }
   Vec3T<S> n = local.gap;
-  const Vec3T<S> slab = beyond == 2 ? Vec3T<S>(Vec3T<S>::Unit(within)) : Vec3T<S>(Vec3T<S>::Zero());
-  return make_orthogonal(n, local.along, slab) ? n : plain;
+  const Vec3T<S> slab = beyond <= 2 ? Vec3T<S>(Vec3T<S>::Unit(within)) : Vec3T<S>(Vec3T<S>::Zero());
+  if (!make_orthogonal(n, local.along, slab)) return plain;
+  // The lean must point out of the box across the edge, into the edge's cone of normals.
+  if (edge_axis >= 0 && n[edge_axis] * local.on_segment[edge_axis] < S(0)) return plain;
+  return n;
 }
 
 /// segment_box_local() for a pair (either order): in the box's frame.

@@ -344,3 +344,135 @@ TEST(SegmentBox, FloatAgreesWithDouble) {
 }
 
 }  // namespace
+
+/// The depth of a segment (p, q) in a box of half extents h at the identity, by the separating
+/// axis test in long double: the least overlap over the box's three axes and the segment's
+/// direction crossed with each (for a segment and a box these axes hold the minimum).
+Real segment_box_sat_depth(const Vec3& p, const Vec3& q, const Vec3& h) {
+  const oracle::V3 a = widen(p), b = widen(q), half = widen(h);
+  const oracle::V3 d = b - a;
+  Real depth = std::numeric_limits<Real>::infinity();
+  auto overlap = [&](const oracle::V3& axis) {
+    const Real length = axis.norm();
+    if (!(length > Real(1e-30))) return;
+    const oracle::V3 n = axis / length;
+    const Real box_radius = half.cwiseProduct(n).cwiseAbs().sum();
+    const Real low = std::min(a.dot(n), b.dot(n)), high = std::max(a.dot(n), b.dot(n));
+    depth = std::min({depth, box_radius - low, high + box_radius});
+  };
+  for (int i = 0; i < 3; ++i) {
+    overlap(oracle::V3::Unit(i));
+    overlap(d.cross(oracle::V3::Unit(i)));
+  }
+  return depth;
+}
+
+TEST(SegmentBox, ASegmentAlongAFaceCrossingItsPlaneAtAHairsAngle) {
+  // A segment in a box face's plane, or through it, tilted from the face by 1e-10 to 1e-5 rad,
+  // crossing one of the face's edges (or its plane) over the face: it touches the face, or one
+  // end dips into the box, the other lies outside. The minimum of the closed form's stretch
+  // beyond the edge lay past its start only by the rounding of t, and was taken: the pair came
+  // out separated by up to 8e-9 (of a size of 3) where it touches or penetrates by 7e-9 (a probe
+  // of stop 62, against exact rational arithmetic). Answers: touching, distance 0; dipping in, the
+  // separating axis test's depth.
+  Rng rng(6201);
+  int touching = 0, dipping = 0;
+  for (int n = 0; n < 4000; ++n) {
+    const mink::Box box{Vec3(rng.uniform(0.3, 2), rng.uniform(0.3, 2), rng.uniform(0.3, 2))};
+    const Vec3& h = box.half_extents;
+    const int k = rng.integer(0, 2), i = (k + 1 + rng.integer(0, 1)) % 3, j = 3 - k - i;
+    const double side_k = rng.chance(0.5) ? 1 : -1, side_j = rng.chance(0.5) ? 1 : -1;
+    const double tilt = rng.log_uniform(1e-10, 1e-5);
+    // Along i from beyond one edge of the face (or within it) to beyond the other.
+    const double from = -h[i] * rng.uniform(0.5, 1.5), to = h[i] * rng.uniform(0.5, 1.5);
+    const double cross_at = rng.uniform(0.9 * std::max(from, -h[i]), 0.9 * std::min(to, h[i]));
+    Vec3 p, q;
+    p[i] = from;
+    q[i] = to;
+    const bool dip = rng.chance(0.5);
+    if (dip) {
+      // Through the face's plane at cross_at, j well inside the face.
+      p[j] = q[j] = h[j] * rng.uniform(-0.9, 0.9);
+      p[k] = side_k * (h[k] + tilt * (from - cross_at));
+      q[k] = side_k * (h[k] + tilt * (to - cross_at));
+      ++dipping;
+    } else {
+      // In the face's plane, across its edge j = side_j h_j at cross_at.
+      p[k] = q[k] = side_k * h[k];
+      p[j] = side_j * (h[j] + tilt * (from - cross_at));
+      q[j] = side_j * (h[j] + tilt * (to - cross_at));
+      ++touching;
+    }
+    const mink::Segment segment{p, q};
+    const double size = segment.bounding_radius() + box.bounding_radius();
+    const double expected = dip ? double(segment_box_sat_depth(p, q, h)) : 0.0;
+    // EPA's depth is good to its tolerance (relative_depth, 1e-10 of the size).
+    const double tolerance = 1e-10 * size;
+    SCOPED_TRACE(::testing::Message() << "case " << n << (dip ? " dipping" : " touching")
+                                      << ", tilt " << tilt << ", depth " << expected);
+    for (const bool swapped : {false, true}) {
+      EXPECT_TRUE(swapped ? mink::intersect(box, Pose{}, segment, Pose{}).intersect
+                          : mink::intersect(segment, Pose{}, box, Pose{}).intersect);
+      const auto d = swapped ? mink::distance(box, Pose{}, segment, Pose{})
+                             : mink::distance(segment, Pose{}, box, Pose{});
+      EXPECT_LE(d.distance, tolerance);
+      const auto c = swapped ? mink::contact(box, Pose{}, segment, Pose{})
+                             : mink::contact(segment, Pose{}, box, Pose{});
+      if (c.intersect) {
+        EXPECT_NEAR(c.depth, expected, tolerance);
+      } else {
+        EXPECT_LE(expected, tolerance);
+        EXPECT_LE(c.distance, tolerance);
+      }
+      // The segment rounded (a capsule): its core's answer deeper by the margin.
+      const mink::Rounded<mink::Segment> rounded{segment, 0.125};
+      const auto r = swapped ? mink::contact(box, Pose{}, rounded, Pose{})
+                             : mink::contact(rounded, Pose{}, box, Pose{});
+      EXPECT_TRUE(r.intersect);
+      EXPECT_NEAR(r.depth, expected + 0.125, tolerance);
+    }
+  }
+  EXPECT_GT(touching, 1000);
+  EXPECT_GT(dipping, 1000);
+}
+
+TEST(SegmentBox, ASegmentPassingOverAnEdgeAtAHairsTiltLeansItsNormal) {
+  // A segment over a box's edge, tilted 1e-9 to 1e-6 rad from the face beside it and rising over
+  // the face, g above the edge (1e-10 to 1e-7 of the size): the closest points are where it passes
+  // over the edge, and the gap there leans off the face's axis by the tilt, orthogonal to the
+  // segment: the normal is (tilt, 0, 1) normalised in the edge's frame. The face's axis, taken
+  // before, missed the distance by the tilt times the segment's length in its support value
+  // (4.5e-8 of the size in a probe of stop 62), also where the segment lies in a side face's plane
+  // over the corner. Both orders, with and without a rigid motion of both shapes.
+  Rng rng(6204);
+  for (int n = 0; n < 2000; ++n) {
+    const mink::Box box{Vec3(rng.uniform(0.3, 2), rng.uniform(0.3, 2), rng.uniform(0.3, 2))};
+    const Vec3& h = box.half_extents;
+    const double tilt = rng.log_uniform(1e-9, 1e-6);
+    const double size_guess = 3 * h.norm();
+    const double gap = size_guess * rng.log_uniform(1e-10, 1e-7);
+    // The edge x = h_x, z = h_z along y; the segment descends towards +x.
+    // Sometimes in the plane of the side face y = h_y, over the box's corner (not moved: moved,
+    // the segment leaves that plane by rounding and its point there can fall a hair beyond the
+    // side face, where the gap is taken along two axes; left open, docs/benchmarks.md, stop 62).
+    const bool moved = rng.chance(0.5);
+    const double y = !moved && rng.chance(0.3) ? h.y() : h.y() * rng.uniform(-0.9, 0.9);
+    const double back = h.x() * rng.uniform(0.2, 1.5), out = h.x() * rng.uniform(0.2, 1.5);
+    const Vec3 p(h.x() - back, y, h.z() + gap + tilt * back);
+    const Vec3 q(h.x() + out, y, h.z() + gap - tilt * out);
+    const mink::Segment segment{p, q};
+    const Vec3 lean = Vec3(tilt, 0, 1).normalized();  // from the box towards the segment
+    const Pose motion = moved ? rng.pose(3) : Pose{};
+    const double size = segment.bounding_radius() + box.bounding_radius();
+    SCOPED_TRACE(testing::Message() << "case " << n << ", tilt " << tilt << ", gap " << gap
+                                    << (moved ? ", moved" : ""));
+    for (const bool swapped : {false, true}) {
+      const auto r = swapped ? mink::distance(segment, motion, box, motion)
+                             : mink::distance(box, motion, segment, motion);
+      ASSERT_EQ(r.status, mink::Status::Separated);
+      const Vec3 expected = motion.rotate(swapped ? Vec3(-lean) : lean);
+      EXPECT_NEAR(r.distance, gap / std::sqrt(1 + tilt * tilt), 1e-15 * size + 1e-9 * gap);
+      EXPECT_LT((r.normal - expected).norm(), 1e-11) << r.normal.transpose();
+    }
+  }
+}
