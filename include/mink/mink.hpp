@@ -8,6 +8,7 @@
 #include "mink/expected.hpp"
 #include "mink/gjk/distance.hpp"
 #include "mink/gjk/intersect.hpp"
+#include "mink/manifold/manifold.hpp"
 #include "mink/math/pose.hpp"
 #include "mink/math/vec.hpp"
 #include "mink/query/shape_queries.hpp"

@@ -319,12 +319,13 @@ ContactResultT<typename A::Scalar> contact_in_range(
   // distance()'s rule: two needles 1e-12 thick, nearly parallel and 3.2e-8 apart, whose
   // difference GJK's first phase took to enclose the origin, had EPA's bracket [-2.5e-6, 2.2e-5]
   // hold 0, and contact() said touching where distance() said apart; 4e-14 apart, EPA's points
-  // lay 0.04 of the size off the needles. Not when that rule is unsure too (IterationLimit): a
-  // cylinder grazing a box's edge 3e-12 deep had EPA's depth below -touch, and EPA settles it,
-  // as it does for distance().
+  // lay 0.04 of the size off the needles. Not when that rule is unsure too (IterationLimit)
+  // without a proven separation: a cylinder grazing a box's edge 3e-12 deep had EPA's depth
+  // below -touch, and EPA settles it, as it does for distance(). A proven one is taken whatever
+  // the status (needles 1.1e-8 apart, where the rule hit its cap, were said touching).
   if (gjk.upper > touch && epa.depth < -touch) {
     const auto cores = separate();
-    if (cores.status != Status::IterationLimit) {
+    if (cores.lower > touch || cores.status != Status::IterationLimit) {
       answer_apart(cores);
       return result;
     }

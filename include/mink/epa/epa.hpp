@@ -169,23 +169,27 @@ bool triangle_normal(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Ve
 /// that much only about u, where the lever is the width. False when the triangle has no width.
 template <class S>
 bool sliver_normal(const Vec3T<S>& p, const Vec3T<S>& q, const Vec3T<S>& r, Vec3T<S>& n) {
-  const Vec3T<S> pq = q - p, qr = r - q, rp = p - r;
-  const S pq_sq = pq.squaredNorm(), qr_sq = qr.squaredNorm(), rp_sq = rp.squaredNorm();
-  // The longest edge, and the offset of the third vertex from the edge's start.
-  Vec3T<S> edge = pq, offset = Vec3T<S>(r - p);
-  if (qr_sq > pq_sq && qr_sq >= rp_sq) {
-    edge = qr;
-    offset = Vec3T<S>(p - q);
-  } else if (rp_sq > pq_sq && rp_sq > qr_sq) {
-    edge = rp;
-    offset = Vec3T<S>(q - r);
-  }
-  const Vec3T<S> u = unit_of(edge);
+  // triangle_cross() names the longest edge by the vertex opposite it; its flatness verdict is
+  // not wanted here.
+  Vec3T<S> unused;
+  S unused_sq;
+  int apex = 0;
+  triangle_cross(p, q, r, unused, unused_sq, &apex);
+  const Vec3T<S>* corners[3] = {&p, &q, &r};
+  const Vec3T<S>& start = *corners[kNextCorner[apex]];
+  const Vec3T<S> u = unit_of(Vec3T<S>(*corners[kCornerAfterNext[apex]] - start));
   if (!is_finite(u)) return false;
-  const Vec3T<S> cross = u.cross(part_across(offset, u));
+  const Vec3T<S> cross = u.cross(part_across(Vec3T<S>(*corners[apex] - start), u));
   if (!(cross.squaredNorm() > S(0))) return false;
   n = unit_of(cross);
   return is_finite(n);
+}
+
+/// Of n and -n, the one along which A - B's support value is smaller (n . up against -n . down,
+/// `up` and `down` its support points along n and -n): a flat A - B's better normal.
+template <class S>
+Vec3T<S> side_of_smaller_support(const Vec3T<S>& n, const Vec3T<S>& up, const Vec3T<S>& down) {
+  return n.dot(up) <= -n.dot(down) ? n : Vec3T<S>(-n);
 }
 
 /// Builds face (i, j, k) of `vertices` in `face`, or returns false if it is degenerate. Its
@@ -636,7 +640,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       const S rise = n.dot(up.w) - plane, fall = plane - n.dot(down.w);
       if (!(rise > flat_tol) && !(fall > flat_tol)) {
         // A - B is flat: the side with the smaller support value is the better normal.
-        return degenerate(n.dot(up.w) <= -n.dot(down.w) ? n : Vec3T<S>(-n));
+        return degenerate(side_of_smaller_support(n, up.w, down.w));
       }
       for (int i = 0; i < 3; ++i) last_triangle[i] = ws.vertices[i].w;
       have_plane = true;
@@ -657,8 +661,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       Vec3T<S> n;
       if (!have_plane || !sliver_normal(last_triangle[0], last_triangle[1], last_triangle[2], n))
         return degenerate(fallback);
-      const S up = n.dot(support(n).w), down = -n.dot(support(Vec3T<S>(-n)).w);
-      return degenerate(up <= down ? n : Vec3T<S>(-n));
+      return degenerate(side_of_smaller_support(n, support(n).w, support(Vec3T<S>(-n)).w));
     }
     ws.faces.clear();
     drop_closest_pair_point(ws.vertices);

@@ -1,4 +1,5 @@
-// A user's program built against an installed mink: one static-shape query and one run-time one.
+// A user's program built against an installed mink: static-shape queries (distance, contact,
+// manifold) and a run-time one.
 #include <mink/mink.hpp>
 
 #include <cmath>
@@ -19,6 +20,22 @@ int main() {
   const auto hit = mink::intersect(*capsule, mink::Pose::identity(), *capsule,
                                    mink::Pose::from_translation(mink::Vec3(0.9, 0, 0)));
   if (!hit.intersect) return 1;
-  std::printf("mink %s consumer ok: distance %.17g\n", mink::kVersion, r.distance);
+  // EPA and the manifold on static types: a cylinder of radius 1 standing on a box's top face
+  // (z = 1), sunk 0.25 into it.
+  const mink::Cylinder cylinder{1.0, 0.5};
+  const mink::Pose standing = mink::Pose::from_translation(mink::Vec3(0, 0, 1.25));
+  const auto deep = mink::contact(b, mink::Pose::identity(), cylinder, standing);
+  if (deep.status != mink::Status::Intersecting || std::abs(deep.depth - 0.25) > 1e-12 ||
+      std::abs(deep.normal.z() - 1.0) > 1e-12) {
+    std::printf("unexpected contact: depth %.17g\n", deep.depth);
+    return 1;
+  }
+  const auto patch = mink::manifold(b, mink::Pose::identity(), cylinder, standing);
+  if (patch.count < 3) {
+    std::printf("unexpected manifold of %d points\n", patch.count);
+    return 1;
+  }
+  std::printf("mink %s consumer ok: distance %.17g, depth %.17g, %d manifold points\n",
+              mink::kVersion, r.distance, deep.depth, patch.count);
   return 0;
 }

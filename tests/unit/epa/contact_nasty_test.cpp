@@ -1407,33 +1407,14 @@ TEST(ContactNasty, CoplanarSliversTouchInTheirPlane) {
   }
 }
 
-/// The distance of segments [p1, q1] and [p2, q2] by a golden-section search over the first one's
-/// parameter (the distance of its point to the second segment is convex in it), in long double:
-/// for segments 1e-12 rad from parallel the closed form's interior solve is noise.
-Real segment_distance_by_search(const V3& p1, const V3& q1, const V3& p2, const V3& q2) {
-  auto at = [&](Real s) {
-    const V3 x = p1 + s * (q1 - p1);
-    return (oracle::closest_on_segment(p2, q2, x).point - x).norm();
-  };
-  const Real ratio = (std::sqrt(Real(5)) - 1) / 2;
-  Real low = 0, high = 1;
-  for (int i = 0; i < 200; ++i) {
-    const Real left = high - ratio * (high - low), right = low + ratio * (high - low);
-    if (at(left) <= at(right))
-      high = right;
-    else
-      low = left;
-  }
-  return std::min({at(Real(0)), at(Real(1)), at(low), at(high)});
-}
-
 TEST(ContactNasty, NearlyParallelNeedlesApartAgreeWithDistance) {
   // Needles as polytopes (a segment and its copy moved by 1e-14 to 1e-10 of its length), nearly
   // parallel (1e-12 to 1e-6 rad), 1e-8 to 1e-5 of their length apart across both. GJK's first
   // phase took a difference this thin to enclose the origin, EPA's bracket held 0, and contact()
   // said touching (depth 0, its normal 1.5e-6 of the size too deep) where distance() said 3.2e-8
   // apart (a probe of stop 62, exact arithmetic). Both must say apart, by the least distance of
-  // the needles' long edges, searched in long double (the true one to within their thickness).
+  // the needles' long edges in long double (oracle::closest_segment_segment(); the true one to
+  // within their thickness).
   oracle::Rng rng(6203);
   for (int n = 0; n < 2000; ++n) {
     const Mat3 frame = rng.rotation().toRotationMatrix();
@@ -1455,8 +1436,9 @@ TEST(ContactNasty, NearlyParallelNeedlesApartAgreeWithDistance) {
     Real expected = std::numeric_limits<Real>::infinity();
     for (int i : {0, 2})
       for (int j : {0, 2})
-        expected = std::min(expected, segment_distance_by_search(widen(a[i]), widen(a[i + 1]),
-                                                                 widen(b[j]), widen(b[j + 1])));
+        expected = std::min(expected, oracle::closest_segment_segment(widen(a[i]), widen(a[i + 1]),
+                                                                      widen(b[j]), widen(b[j + 1]))
+                                          .distance);
     const auto polytope_a = polytope(a), polytope_b = polytope(b);
     const double size = polytope_a.bounding_radius() + polytope_b.bounding_radius();
     const double tolerance = 1e-9 * size + 2 * (thick_a + thick_b);
