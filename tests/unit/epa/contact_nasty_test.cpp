@@ -1463,3 +1463,28 @@ TEST(ContactNasty, NearlyParallelNeedlesApartAgreeWithDistance) {
     }
   }
 }
+
+TEST(ContactNasty, NeedlesThatGjkProvesApartAreApartWhateverItsCap) {
+  // Two needles 1e-9 thick, 1e-12 rad from parallel, 1.1155401703e-8 apart (exact rational
+  // arithmetic, stop 62's probe). GJK proves them apart but hits its cap first; EPA's bracket
+  // held 0 and contact() said touching. A proven separation is the answer, flagged with the cap.
+  const std::vector<Vec3> a = {{1.5082426806396798, -2.0460386632322054, -3.1060736825395243},
+                               {2.1034084470756516, 0.1577459992894924, -2.611788669543484},
+                               {1.5082426819337054, -2.046038663605111, -3.106073682435042},
+                               {2.103408448369677, 0.15774599891658683, -2.611788669439002}};
+  const std::vector<Vec3> b = {{1.452262798644442, -2.2533214794418743, -3.1525649709636046},
+                               {2.0765367760610505, 0.058245304515672336, -2.6341055963767053},
+                               {1.4522627976594151, -2.253321478994466, -3.1525649717723225},
+                               {2.0765367750760237, 0.058245304963080606, -2.6341055971854233}};
+  const double exact = 1.1155401703166163e-08;
+  const auto polytope_a = polytope(a), polytope_b = polytope(b);
+  const double size = polytope_a.bounding_radius() + polytope_b.bounding_radius();
+  for (const bool swapped : {false, true}) {
+    SCOPED_TRACE(swapped ? "B, A" : "A, B");
+    const auto c = swapped ? mink::contact(polytope_b, Pose{}, polytope_a, Pose{})
+                           : mink::contact(polytope_a, Pose{}, polytope_b, Pose{});
+    EXPECT_FALSE(c.intersect) << oracle::describe(c);
+    EXPECT_NEAR(c.distance, exact, 1e-9 * size) << oracle::describe(c);
+    EXPECT_LE(std::abs(c.distance - exact), c.error_bound + 1e-12 * size);
+  }
+}
