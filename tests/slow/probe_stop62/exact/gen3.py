@@ -1,4 +1,6 @@
-import json, math, sys
+# Nearly parallel segments, capsules, slivers and needles. NEEDLES=rounded: only the sliver and
+# needle kinds (3, 4), half of them rounded (kinds 13, 14).
+import json, math, os, sys
 import numpy as np
 import gen
 from gen import *
@@ -6,6 +8,7 @@ seed = int(sys.argv[1]) if len(sys.argv) > 1 else 5
 N = float(sys.argv[2]) if len(sys.argv) > 2 else 1.0
 gen.rng = np.random.default_rng(seed)
 rng = gen.rng
+ROUNDED = os.environ.get('NEEDLES') == 'rounded'
 def perp(u):
     v = rng.normal(size=3); v -= v.dot(u) * u; return v / np.linalg.norm(v)
 def quat_from_z(d):
@@ -28,7 +31,7 @@ def gen_parallel(n):
         shift = rng.uniform(-0.2, 0.2) * min(la, lb)
         cb = c + v * h + u * shift
         A = np.array([c - u * la, c + u * la]); B = np.array([cb - d2 * lb, cb + d2 * lb])
-        k = rng.integers(6)
+        k = int(rng.choice([3, 4])) if ROUNDED else rng.integers(6)
         if k == 0:
             a = {'type': 'segment', 'points': A.tolist()}; b = {'type': 'segment', 'points': B.tolist()}; pa = {}; pb = {}
         elif k == 1:
@@ -56,6 +59,10 @@ def gen_parallel(n):
             L = rng.uniform(0.3, 1) * s
             b = {'type': 'segment', 'points': [(m - dd * L).tolist(), (m + dd * L).tolist()]}
             pa = {}; pb = {}
+        if ROUNDED and rng.random() < 0.5:
+            r = float(rng.choice([0.1, 1e-3])) * s
+            a = {'type': 'rounded', 'shape': a, 'radius': r}; b = {'type': 'rounded', 'shape': b, 'radius': r}
+            k = k + 10
         emit('parallel', a, pa, b, pb, 'k%d_ang%g_h%g' % (k, ang, abs(h) / s))
 gen_parallel(int(600 * N))
 for i, c in enumerate(cases):

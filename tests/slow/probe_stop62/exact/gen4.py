@@ -1,4 +1,6 @@
-import json, math, sys
+# Box-segment pairs. BOXSEG=hair: only the first three kinds, the segment 3e-10 to 3e-7 rad from
+# the face (log-uniform) instead of a tilt from ANG.
+import json, math, os, sys
 import numpy as np
 import gen
 from gen import *
@@ -6,6 +8,7 @@ seed = int(sys.argv[1]) if len(sys.argv) > 1 else 5
 N = float(sys.argv[2]) if len(sys.argv) > 2 else 1.0
 gen.rng = np.random.default_rng(seed)
 rng = gen.rng
+HAIR = os.environ.get('BOXSEG') == 'hair'
 def rq():
     q = rng.normal(size=4); q /= np.linalg.norm(q); return [float(v) for v in q]
 ANG=[0,1e-12,1e-10,1e-8,1e-6,1e-4,1e-2]
@@ -13,8 +16,9 @@ def gen_boxseg(n):
     for _ in range(n):
         s = float(10 ** rng.uniform(-1, 1))
         he = np.array(rand_box_he(s))
-        k = rng.integers(6)
-        ang = float(rng.choice(ANG)); h = float(rng.choice([0, 0, 1e-14, 1e-12, 1e-10, 1e-8, -1e-12, -1e-8])) * s
+        k = rng.integers(3) if HAIR else rng.integers(6)
+        ang = float(10 ** rng.uniform(-9.5, -6.5)) if HAIR else float(rng.choice(ANG))
+        h = float(rng.choice([0, 0, 1e-14, 1e-12, 1e-10, 1e-8, -1e-12, -1e-8])) * s
         P = np.eye(3)[rng.permutation(3)] * rng.choice([-1, 1], 3)[:, None]   # signed permutation (exact)
         if k == 0:   # in face plane y=he1, crossing the edge (y=he1,z=he2) at tiny angle
             xc = rng.uniform(-1, 1) * he[0]
@@ -57,7 +61,8 @@ def gen_boxseg(n):
         else:
             q = rq(); t = [float(v) for v in rng.normal(size=3) * s]
             pa = {'t': t, 'q': q}; pb = {'t': t, 'q': q}
-        emit('boxseg', box, pa, b, pb, 'k%d_ang%g_h%g_%s_%s' % (k, ang, h / s, b['type'], box['type']))
+        label = ('k%d_ang%.1e_h%g_%s_%s' if HAIR else 'k%d_ang%g_h%g_%s_%s') % (k, ang, h / s, b['type'], box['type'])
+        emit('boxseg', box, pa, b, pb, label)
 gen_boxseg(int(1500 * N))
 for i, c in enumerate(cases):
     c['pid'] = i
