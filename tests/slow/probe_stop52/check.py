@@ -1,5 +1,6 @@
-"""Runs mink on gen_exact.py's cases (contact and distance, both argument orders) and checks every
-answer against the construction, refined in long double.
+"""Runs mink on gen_exact.py's cases, and on probe 62's (../probe_stop62/curved/gen_curved.py),
+contact and distance in both argument orders, and checks every answer against the construction,
+refined in long double.
 usage: MINK=path python3 check.py cases.jsonl results.jsonl
 Errors are recorded as fractions of the size (sum of the bounding radii); an answer fails beyond
 1e-9 of the size plus 16 eps times the largest translation (the rounding of world coordinates)."""
@@ -48,8 +49,16 @@ def check_case(c, ans):
     tol = 1e-9 * size; allow = tol + 16 * EPS * T
     F = pair_fn(P, pa, C, pb, LD)
     if exp["n"] is None:   # no construction: a search, refined in long double
-        v, u = minimize(pair_fn(P, pa, C, pb), ngrid=20000, nstarts=6)
+        # exp.hint (probe 62's gen_curved.py, tilt_search): the direction the case was built on,
+        # one more start for the search and its own refinement.
+        hint = exp.get("hint")
+        v, u = minimize(pair_fn(P, pa, C, pb), ngrid=20000, nstarts=6, extra=[hint] if hint else [])
         s_n, n = refine(F, u, r0=1e-4); s_n = float(s_n)
+        if hint:
+            s_h, n_h = refine(F, ld(hint), r0=1e-6)
+            if float(s_h) < s_n: s_n, n = float(s_h), n_h
+            rs = structured_min(P, pa, C, pb, ld(hint), size)
+            if rs is not None and rs[0] < s_n: s_n, n = rs[0], rs[1]
         exp = dict(exp, n=[float(x) for x in n], gap=-s_n)
     n = ld(exp["n"]); n /= np.sqrt(np.sum(n * n))
     s_n = float(F(n[None, :])[0])

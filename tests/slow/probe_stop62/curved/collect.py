@@ -3,7 +3,7 @@ unconfirmed.jsonl (only the structured oracle objects: oracle doubts). usage: co
 import json, os, sys, subprocess, collections
 import numpy as np
 sys.path.insert(0, "../../probe_stop52"); sys.path.insert(0, ".")
-from check_curved import qline
+from check import qline  # ../../probe_stop52/check.py
 args = sys.argv[1:]
 fo, fu = open("failures.jsonl", "w"), open("unconfirmed.jsonl", "w")
 summary = collections.defaultdict(lambda: {"lines": 0, "cases": set(), "worst": 0.0, "wid": ""})

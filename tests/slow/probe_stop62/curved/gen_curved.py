@@ -3,7 +3,7 @@
 A's support set along +n contains e, B's support set along -n contains c = e + gap n (both
 shapes curved or with curved parts). Then for gap >= 0: distance = gap, normal = n, witnesses in
 the two support sets with difference gap n (the pair e, c itself when one set is a single point).
-For gap < 0, n gives -gap: an upper bound on the depth (checked by search in check_curved.py).
+For gap < 0, n gives -gap: an upper bound on the depth (checked by search in ../../probe_stop52/check.py).
 
 Support sets are computed in closed form (long double) as a base point plus generators
 (segments, discs): support_set(). Feature kinds by the set's dimension: P (point), L (segment),

@@ -2,7 +2,7 @@ import json, os, sys, subprocess
 import numpy as np
 sys.path.insert(0, "../../probe_stop52"); sys.path.insert(0, ".")
 from common import *
-from check_curved import qline
+from check import qline  # ../../probe_stop52/check.py
 cf = sys.argv[1]
 for spec in sys.argv[2:]:
     cid, w = spec.split(",")
