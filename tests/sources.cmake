@@ -20,6 +20,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/polytope_pair_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/curved_separation_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/curved_beside_feature_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/flat_pair_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/corner_solid_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/curved_kink_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/point_polytope_test.cpp

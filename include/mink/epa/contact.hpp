@@ -276,18 +276,36 @@ ContactResultT<typename A::Scalar> contact_in_range(
     const auto axial = detail::axial_depth(diff, size, tolerances, max_tilt, min_tilt);
     const bool checked = std::isfinite(ceiling);
     if (!axial || (checked && axial->status != Status::Intersecting)) return false;
-    const Vec3T<S> axial_a = pose_a.apply(Vec3T<S>(axial->on_a + radius_a * axial->normal));
-    const Vec3T<S> axial_b = pose_a.apply(Vec3T<S>(axial->on_b - radius_b * axial->normal));
+    // Flat features nearly parallel (a cone's base on a cylinder's cap tilted 4e-7 rad): the
+    // planes' normal is good to 1e-13 rad and their points are any of the overlap, 1e-4 of the
+    // size off the deepest one. A face's normal nearby, and the features' own witness pair
+    // along it, as Newton's steps end (snap_to_face(), feature_witness()). Not on a tie, whose
+    // normal is the one chosen.
+    Vec3T<S> n = axial->normal, on_a = axial->on_a, on_b = axial->on_b;
+    int witness_calls = 0;
+    if (tolerances.refine_curved_normals && !axial->normal_chosen) {
+      auto pair = detail::SupportMinimum<S>::at(diff, n, witness_calls);
+      detail::snap_to_face(diff, size, witness_calls, pair);
+      if (detail::feature_witness(diff, size, witness_calls, pair) &&
+          std::abs(pair.value - axial->depth) <= tolerances.relative_depth * size) {
+        n = pair.normal;
+        on_a = pair.vertex.a;
+        on_b = pair.vertex.b;
+        detail::share_residual(on_a, on_b, n, axial->depth);
+      }
+    }
+    const Vec3T<S> axial_a = pose_a.apply(Vec3T<S>(on_a + radius_a * n));
+    const Vec3T<S> axial_b = pose_a.apply(Vec3T<S>(on_b - radius_b * n));
     const S axial_depth = axial->depth + radius_a + radius_b;
     if (!(is_finite(axial_a) && is_finite(axial_b) && std::isfinite(axial_depth) &&
           std::isfinite(axial->error_bound)))
       return false;
     if (checked && !(axial_depth <= ceiling)) return false;
-    result.iterations += axial->iterations;
+    result.iterations += axial->iterations + witness_calls;
     result.intersect = true;
     result.depth = axial_depth;
     result.error_bound = axial->error_bound;
-    result.normal = pose_a.rotate(axial->normal);
+    result.normal = pose_a.rotate(n);
     result.point_a = axial_a;
     result.point_b = axial_b;
     result.normal_chosen = axial->normal_chosen;
@@ -340,6 +358,23 @@ ContactResultT<typename A::Scalar> contact_in_range(
   S core_depth = std::max(S(0), epa.depth);
   Vec3T<S> on_a = epa.a, on_b = epa.b;
   bool refined = false;
+  if constexpr (!detail::kCurvedPair<A, B>) {
+    // Polytopes: EPA's normal is a face of A - B, exact, but where two faces are nearly parallel
+    // (a hull's face on a box's, tilted 1e-9 rad) its nearest face may be any within its
+    // tolerance, and its points any of the overlap: up to 0.64 of the size from the deepest
+    // corner. The features' own witness pair along the normal (feature_witness()).
+    if (!epa.degenerate && epa.status == Status::Intersecting &&
+        epa.upper - epa.lower > S(64) * std::numeric_limits<S>::epsilon() * size) {
+      detail::SupportMinimum<S> pair;
+      pair.normal = n;
+      if (detail::feature_witness(diff, size, result.iterations, pair) &&
+          std::abs(pair.value - core_depth) <= tolerances.relative_depth * size) {
+        on_a = pair.vertex.a;
+        on_b = pair.vertex.b;
+        detail::share_residual(on_a, on_b, n, core_depth);
+      }
+    }
+  }
   if constexpr (detail::kCurvedPair<A, B>) {
     // Curved cores: EPA's normal of a smooth minimum is good to the square root of its tolerance
     // (1e-5 rad); Newton's steps (gjk/support_newton.hpp) take it, and the points (the support

@@ -183,6 +183,23 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
       }
     }
   }
+  if constexpr (!kCurvedPair<A, B>) {
+    // Polytopes: GJK's bracket closes on a face of A - B to rounding, except where two faces
+    // are nearly parallel (a hull's face over a box's, tilted 1e-10 rad): its simplex may then
+    // be any within its tolerance, and its points any of the overlap, 0.34 of the size from
+    // the nearest corner. The features' own witness pair along the normal (feature_witness()).
+    if (gjk.upper - out.lower > S(64) * std::numeric_limits<S>::epsilon() * size &&
+        std::isfinite(gjk.upper)) {
+      SupportMinimum<S> pair;
+      pair.normal = out.normal;
+      if (feature_witness(diff, size, iterations, pair) &&
+          std::abs(pair.value + gjk.upper) <= tolerances.relative_depth * size) {
+        out.on_a = pair.vertex.a;
+        out.on_b = pair.vertex.b;
+        share_residual(out.on_a, out.on_b, out.normal, -gjk.upper);
+      }
+    }
+  }
   const bool capped = gjk.status == Status::IterationLimit;
   const bool open = gjk.upper - out.lower > tolerances.relative_depth * size;
   if (gjk.upper <= radii + touch)

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <limits>
 
+#include "mink/gjk/flat_pair.hpp"
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/support_descent.hpp"
@@ -471,7 +472,10 @@ bool witness_at_crossing(const CoreDifference<A, B>& diff,
 ///     six ways (used before the features) took a rim seen within 1e-7 rad of its axis for a
 ///     face, its support point jumping round the rim;
 ///   - both show an edge (a cone's or cylinder's side line across a box's edge or another side
-///     line): where the edges cross (witness_at_crossing()).
+///     line): where the edges cross (witness_at_crossing());
+///   - both show a face or an edge, nearly parallel (a cylinder's cap on a box, tilted 1e-9 rad):
+///     the deepest point of their overlap (gjk/flat_pair.hpp), when the depth varies over it by
+///     more than rounding.
 /// GJK's and EPA's points are combinations of support points from several directions: beside a
 /// face, the curved core's are a chord below its surface, and the face's point lay off the
 /// contact by the chord's tilt (2e-7 of the size, with the normal exact to 1e-13); at crossing
@@ -485,16 +489,27 @@ bool feature_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, 
   SupportFeatureT<S> feature_a, feature_b;
   core_features(diff, u, S(kFeatureWitnessTolerance) * size, feature_a, feature_b);
   const bool single = (feature_a.count == 1) != (feature_b.count == 1);
-  const bool edges = feature_a.count == 2 && feature_b.count == 2;
-  if (!single && !edges) return false;
+  const bool flat = feature_a.count >= 2 && feature_b.count >= 2;
+  if (!single && !flat) return false;
   SimplexVertexT<S> pair;
   diff.support(u, pair);
   ++iterations;
   const S value = u.dot(pair.w);
   if (!std::isfinite(value) || !is_finite(pair.w)) return false;
-  if (!(single ? witness_beside_single_point(diff, feature_a, feature_b, u, value, pair)
-               : witness_at_crossing(diff, feature_a, feature_b, u, value, pair)))
-    return false;
+  if (single) {
+    if (!witness_beside_single_point(diff, feature_a, feature_b, u, value, pair)) return false;
+  } else if (!(feature_a.count == 2 && feature_b.count == 2 &&
+               witness_at_crossing(diff, feature_a, feature_b, u, value, pair))) {
+    // Faces or edges nearly parallel: the deepest point of their overlap, when the depth
+    // varies over it by more than rounding and that point is within the features' tolerance of
+    // the support value (with an exact normal, it is the value).
+    SimplexVertexT<S> deepest = pair;
+    if (!flat_pair_witness<S>(feature_a, feature_b, diff.rotation, diff.translation, u,
+                              S(4) * support_rounding(pair), deepest.a, deepest.b) ||
+        !(value - u.dot(Vec3T<S>(deepest.a - deepest.b)) <= S(kFeatureWitnessTolerance) * size))
+      return false;
+    pair = deepest;
+  }
   pair.w = pair.a - pair.b;
   pair.dir = u;
   best.value = value;
