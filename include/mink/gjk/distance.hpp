@@ -234,9 +234,10 @@ DistanceResultT<typename A::Scalar> distance_in_range(
     return result;
   }
   detail::separated_from_cores(pose_a.apply(cores.on_a), pose_a.apply(cores.on_b),
-                               pose_a.rotate(cores.normal), gjk.upper, radius_a, radius_b, result);
+                               pose_a.rotate(cores.normal), cores.upper, radius_a, radius_b,
+                               result);
   result.status = cores.status;
-  result.error_bound = std::max(S(0), gjk.upper - cores.lower);
+  result.error_bound = std::max(S(0), cores.upper - cores.lower);
   return result;
 }
 

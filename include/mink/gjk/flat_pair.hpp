@@ -23,6 +23,9 @@
 
 namespace mink::detail {
 
+/// Least area of a polygon feature, over its longest side squared, whose plane is trusted.
+inline constexpr double kFlatMinAspect = 1e-3;
+
 /// A flat support feature seen along u: its outline across u (coordinates in a basis e1, e2 of
 /// the plane orthogonal to u) and its height along u anywhere on it.
 template <class S>
@@ -100,13 +103,17 @@ bool flat_shadow(const SupportFeatureT<S>& f, const Mat3T<S>& rotation, const Ve
     out.base = u.dot(c);
     return true;
   }
-  // Counter-clockwise seen along u, for holds().
-  S area = S(0);
+  // Counter-clockwise seen along u, for holds(). A sliver's plane is not known to better than
+  // the rounding over its width: its slope would pick the point (a triangle 1e-8 wide moved a
+  // witness that EPA had exact by 1e-9 of the size).
+  S area = S(0), diameter_sq = S(0);
   for (int i = 0; i < f.count; ++i) {
     const Planar& a = out.corners[i];
     const Planar& b = out.corners[i + 1 == f.count ? 0 : i + 1];
     area += a.x() * b.y() - a.y() * b.x();
+    diameter_sq = std::max(diameter_sq, (b - a).squaredNorm());
   }
+  if (!(std::abs(area) > S(kFlatMinAspect) * diameter_sq)) return false;
   if (area < S(0)) {
     std::reverse(out.corners, out.corners + f.count);
     std::reverse(out.heights, out.heights + f.count);
@@ -168,7 +175,9 @@ void circles_crossings(const Eigen::Matrix<S, 2, 1>& c0, S r0, const Eigen::Matr
 /// varies by no more than that over the candidates, the features are parallel to rounding, any
 /// point of the overlap is as good, and false is returned (as when the features do not overlap).
 /// The candidates: corners of either feature inside the other, crossings of their sides and rims,
-/// and on a disc facing a face the rim point farthest up the depth's slope.
+/// and on a disc facing a face the rim point farthest up the depth's slope. At least one feature
+/// must be a polygon or disc that is not a sliver (two edges cross at one point, or run
+/// parallel where the closed forms of segments answer).
 template <class S>
 bool flat_pair_witness(const SupportFeatureT<S>& fa, const SupportFeatureT<S>& fb,
                        const Mat3T<S>& rotation, const Vec3T<S>& translation, const Vec3T<S>& u,
@@ -176,6 +185,7 @@ bool flat_pair_witness(const SupportFeatureT<S>& fa, const SupportFeatureT<S>& f
   using Planar = typename FlatShadow<S>::Planar;
   Vec3T<S> e1, e2;
   plane_basis(u, e1, e2);
+  if (fa.count < 3 && fb.count < 3) return false;
   FlatShadow<S> a, b;
   if (!flat_shadow<S>(fa, Mat3T<S>::Identity(), Vec3T<S>::Zero(), u, e1, e2, a) ||
       !flat_shadow<S>(fb, rotation, translation, u, e1, e2, b))

@@ -20,6 +20,9 @@ struct CoreSeparation {
   Vec3T<S> on_a;    ///< closest point of A's core (A's frame)
   Vec3T<S> on_b;    ///< closest point of B's core (A's frame); on_b - on_a = distance * normal
   S lower;          ///< proven lower bound on the core distance: the separation along `normal`
+  /// The core distance answered: GJK's upper bound, or the distance of a witness pair that
+  /// `normal` proves to be the closest (polytopes' nearly parallel faces), >= lower.
+  S upper;
   /// What GJK's bracket [lower, upper] on the core distance says of the full shapes (radii
   /// added): Separated; Intersecting when they penetrate by the radii or touch (see
   /// separate_cores()); IterationLimit when GJK hit its cap or its bracket stayed open.
@@ -156,6 +159,7 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
   const S touch = tolerances.relative * size;
   CoreSeparation<S> out;
   find_separation(diff, gjk, touch, tolerances.max_iterations, iterations, out);
+  out.upper = gjk.upper;
   if constexpr (kCurvedPair<A, B>) {
     // Curved cores apart or touching: the normal of a smooth minimum is good to the square root
     // of GJK's tolerance; Newton's steps (gjk/support_newton.hpp) take it to the rounding, and
@@ -187,16 +191,20 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
     // Polytopes: GJK's bracket closes on a face of A - B to rounding, except where two faces
     // are nearly parallel (a hull's face over a box's, tilted 1e-10 rad): its simplex may then
     // be any within its tolerance, and its points any of the overlap, 0.34 of the size from
-    // the nearest corner. The features' own witness pair along the normal (feature_witness()).
+    // the nearest corner. A face's normal and the features' witness pair (witness_at_face()):
+    // two points of the shapes whose distance that normal proves the least, so it is the
+    // answer (GJK's upper bound was above it by up to its tolerance).
     if (gjk.upper - out.lower > S(64) * std::numeric_limits<S>::epsilon() * size &&
         std::isfinite(gjk.upper)) {
       SupportMinimum<S> pair;
-      pair.normal = out.normal;
-      if (feature_witness(diff, size, iterations, pair) &&
+      if (witness_at_face(diff, out.normal, size, iterations, pair) &&
           std::abs(pair.value + gjk.upper) <= tolerances.relative_depth * size) {
+        out.normal = pair.normal;
+        out.upper = std::min(gjk.upper, -pair.value);
+        out.lower = std::max(out.lower, out.upper);
         out.on_a = pair.vertex.a;
         out.on_b = pair.vertex.b;
-        share_residual(out.on_a, out.on_b, out.normal, -gjk.upper);
+        share_residual(out.on_a, out.on_b, out.normal, -out.upper);
       }
     }
   }

@@ -517,6 +517,23 @@ bool feature_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, 
   return true;
 }
 
+/// For cores whose normal is exact without Newton's steps (polytopes, boxes, segments), where
+/// two faces are nearly parallel: a face's normal within reach (snap_to_face()) and the features'
+/// witness pair along it (feature_witness()), kept only when the pair lies the support value
+/// apart along that normal to rounding, so that both points stay on their surfaces. `best`
+/// starts at the unit `normal` (one support call, and those of the two; counted in
+/// `iterations`). Returns whether `best` holds the pair.
+template <ConvexShape A, ConvexShape B>
+bool witness_at_face(const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& normal,
+                     typename A::Scalar size, int& iterations,
+                     SupportMinimum<typename A::Scalar>& best) {
+  using S = typename A::Scalar;
+  best = SupportMinimum<S>::at(diff, normal, iterations);
+  snap_to_face(diff, size, iterations, best);
+  return feature_witness(diff, size, iterations, best) &&
+         (best.vertex.w - best.value * best.normal).norm() <= S(4) * support_rounding(best.vertex);
+}
+
 /// The witness pair along the unit `normal` where the cores touch or nearly do, which Newton's
 /// steps leave alone (the normal is ill-conditioned there): when one core has a single point on
 /// its support plane, that point and its shift onto the other core's plane, proved a point of it;
