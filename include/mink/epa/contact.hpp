@@ -279,14 +279,13 @@ ContactResultT<typename A::Scalar> contact_in_range(
     // Flat features nearly parallel (a cone's base on a cylinder's cap tilted 4e-7 rad): the
     // planes' normal is good to 1e-13 rad and their points are any of the overlap, 1e-4 of the
     // size off the deepest one. A face's normal nearby, and the features' own witness pair
-    // along it, as Newton's steps end (snap_to_face(), feature_witness()). Not on a tie, whose
-    // normal is the one chosen.
+    // along it, as Newton's steps end (witness_at_face()). Not on a tie, whose normal is the
+    // one chosen.
     Vec3T<S> n = axial->normal, on_a = axial->on_a, on_b = axial->on_b;
     int witness_calls = 0;
     if (tolerances.refine_curved_normals && !axial->normal_chosen) {
-      auto pair = detail::SupportMinimum<S>::at(diff, n, witness_calls);
-      detail::snap_to_face(diff, size, witness_calls, pair);
-      if (detail::feature_witness(diff, size, witness_calls, pair) &&
+      detail::SupportMinimum<S> pair;
+      if (detail::witness_at_face(diff, n, size, witness_calls, pair) &&
           std::abs(pair.value - axial->depth) <= tolerances.relative_depth * size) {
         n = pair.normal;
         on_a = pair.vertex.a;
@@ -368,6 +367,7 @@ ContactResultT<typename A::Scalar> contact_in_range(
         epa.upper - epa.lower > S(64) * std::numeric_limits<S>::epsilon() * size) {
       detail::SupportMinimum<S> pair;
       if (detail::witness_at_face(diff, n, size, result.iterations, pair) &&
+          detail::pair_on_support_planes(pair) &&
           std::abs(pair.value - core_depth) <= tolerances.relative_depth * size) {
         n = pair.normal;
         core_depth = std::max(S(0), pair.value);

@@ -41,27 +41,26 @@ struct FlatShadow {
   Planar anchor = Planar::Zero(), slope = Planar::Zero();
   S base = S(0);
 
+  /// An edge's weight t in [0, 1] of its point corners[0] + t (corners[1] - corners[0]) nearest
+  /// x (0 for an edge of no length).
+  S edge_weight(const Planar& x) const {
+    const Planar edge = corners[1] - corners[0];
+    const S length_sq = edge.squaredNorm();
+    return length_sq > S(0) ? std::clamp((x - corners[0]).dot(edge) / length_sq, S(0), S(1)) : S(0);
+  }
+
   /// The height along u of the feature's point seen at x (x on the feature). An edge's height is
   /// taken at x's nearest point on it.
   S height_at(const Planar& x) const {
     if (count >= 3) return base + slope.dot(x - anchor);
-    const Planar edge = corners[1] - corners[0];
-    const S length_sq = edge.squaredNorm();
-    const S t =
-        length_sq > S(0) ? std::clamp((x - corners[0]).dot(edge) / length_sq, S(0), S(1)) : S(0);
-    return heights[0] + t * (heights[1] - heights[0]);
+    return heights[0] + edge_weight(x) * (heights[1] - heights[0]);
   }
 
   /// Whether x lies in the outline, to `tolerance` (unit: length).
   bool holds(const Planar& x, S tolerance) const {
     if (disc) return (x - centre).norm() <= radius + tolerance;
-    if (count == 2) {
-      const Planar edge = corners[1] - corners[0];
-      const S length_sq = edge.squaredNorm();
-      const S t =
-          length_sq > S(0) ? std::clamp((x - corners[0]).dot(edge) / length_sq, S(0), S(1)) : S(0);
-      return (x - corners[0] - t * edge).norm() <= tolerance;
-    }
+    if (count == 2)
+      return (x - corners[0] - edge_weight(x) * (corners[1] - corners[0])).norm() <= tolerance;
     for (int i = 0; i < count; ++i) {
       const Planar edge = corners[i + 1 == count ? 0 : i + 1] - corners[i];
       const Planar to = x - corners[i];

@@ -198,6 +198,7 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
         std::isfinite(gjk.upper)) {
       SupportMinimum<S> pair;
       if (witness_at_face(diff, out.normal, size, iterations, pair) &&
+          pair_on_support_planes(pair) &&
           std::abs(pair.value + gjk.upper) <= tolerances.relative_depth * size) {
         out.normal = pair.normal;
         out.upper = std::min(gjk.upper, -pair.value);

@@ -517,21 +517,25 @@ bool feature_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, 
   return true;
 }
 
-/// For cores whose normal is exact without Newton's steps (polytopes, boxes, segments), where
-/// two faces are nearly parallel: a face's normal within reach (snap_to_face()) and the features'
-/// witness pair along it (feature_witness()), kept only when the pair lies the support value
-/// apart along that normal to rounding, so that both points stay on their surfaces. `best`
-/// starts at the unit `normal` (one support call, and those of the two; counted in
-/// `iterations`). Returns whether `best` holds the pair.
+/// Where two faces are nearly parallel and the normal came without Newton's steps (polytopes
+/// after EPA or GJK, the axial planes): a face's normal within reach (snap_to_face()) and the
+/// features' witness pair along it (feature_witness()). `best` starts at the unit `normal` (one
+/// support call, and those of the two; counted in `iterations`). Returns whether `best` holds
+/// the pair.
 template <ConvexShape A, ConvexShape B>
 bool witness_at_face(const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& normal,
                      typename A::Scalar size, int& iterations,
                      SupportMinimum<typename A::Scalar>& best) {
-  using S = typename A::Scalar;
-  best = SupportMinimum<S>::at(diff, normal, iterations);
+  best = SupportMinimum<typename A::Scalar>::at(diff, normal, iterations);
   snap_to_face(diff, size, iterations, best);
-  return feature_witness(diff, size, iterations, best) &&
-         (best.vertex.w - best.value * best.normal).norm() <= S(4) * support_rounding(best.vertex);
+  return feature_witness(diff, size, iterations, best);
+}
+
+/// Whether the pair of `best` lies its support value apart along its normal to rounding, so
+/// that both points are on their surfaces: what polytopes ask of witness_at_face()'s pair.
+template <class S>
+bool pair_on_support_planes(const SupportMinimum<S>& best) {
+  return (best.vertex.w - best.value * best.normal).norm() <= S(4) * support_rounding(best.vertex);
 }
 
 /// The witness pair along the unit `normal` where the cores touch or nearly do, which Newton's
