@@ -386,8 +386,8 @@ ContactResultT<typename A::Scalar> contact_in_range(
       auto least = detail::SupportMinimum<S>::at(diff, n, result.iterations);
       const S rounding =
           S(16) * std::numeric_limits<S>::epsilon() * least.vertex.w.cwiseAbs().maxCoeff();
-      if (detail::newton_on_support(diff, size, tolerances.relative_depth * size, 3,
-                                    result.iterations, least) > 0 &&
+      if (detail::newton_on_support(diff, size, tolerances.relative_depth * size,
+                                    detail::kNewtonMaxSteps, result.iterations, least) > 0 &&
           least.value <= epa.upper + rounding) {
         n = least.normal;
         core_depth = std::max(S(0), least.value);

@@ -169,8 +169,8 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
     // rim), the steps leave the value within its rounding and the points where they were.
     if (tolerances.refine_curved_normals && std::isfinite(gjk.upper)) {
       auto least = SupportMinimum<S>::at(diff, out.normal, iterations);
-      if (newton_on_support(diff, size, tolerances.relative_depth * size, 3, iterations, least) >
-          0) {
+      if (newton_on_support(diff, size, tolerances.relative_depth * size, kNewtonMaxSteps,
+                            iterations, least) > 0) {
         out.normal = least.normal;
         out.lower = std::max(out.lower, -least.value);
         out.on_a = least.vertex.a;

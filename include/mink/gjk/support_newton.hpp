@@ -203,6 +203,13 @@ bool secant_on_kink(const CoreDifference<A, B>& diff, Vec3T<typename A::Scalar> 
   return improved;
 }
 
+/// Newton steps that distance() and contact() allow (newton_on_support()). One or two reach the
+/// rounding from GJK's or EPA's normal where h is curved alike all round, and the steps stop
+/// there. Where one core's point turns 1e5 times faster than the normal (a rim seen from 1e-5 rad
+/// off its axis), the Hessian changes along the step itself and the steps converge linearly at
+/// first: five to seven from 1e-5 rad (three had left the rim point up to 7e-6 of the size off).
+inline constexpr int kNewtonMaxSteps = 8;
+
 /// The steps of newton_on_support(), without its check of the witness pair.
 template <ConvexShape A, ConvexShape B>
 int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int max_steps,
@@ -230,6 +237,9 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
     // A smooth h moves the support point by at most delta times the diameter of A - B.
     const V jump1 = w1.w - s, jump2 = w2.w - s;
     const S smooth = S(4) * delta * size;
+    // The support point's derivative along t_j, for the Hessian below.
+    V d1 = jump1 / delta, d2 = jump2 / delta;
+    bool stiff = false;  // the point turns much faster than the normal (see below)
     if (jump1.norm() > smooth || jump2.norm() > smooth) {
       // A kink's jump keeps its length as the turn shrinks; a smooth core's shrinks with it. Its
       // radius of curvature may well exceed the size: a cylinder's rim seen from 0.07 rad off its
@@ -237,17 +247,39 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
       // at EPA's 1e-5 rad.
       const bool first = jump1.norm() >= jump2.norm();
       const SimplexVertexT<S>& across = first ? w1 : w2;
+      const S central = delta / S(16);
       SimplexVertexT<S> closer;
-      diff.support(unit_of(V(u + (delta / S(16)) * (first ? t1 : t2))), closer);
+      diff.support(unit_of(V(u + central * (first ? t1 : t2))), closer);
       ++iterations;
       if ((closer.w - s).norm() > S(0.25) * (across.w - s).norm()) {
         if (secant_on_kink(diff, kink_edge(across, best.vertex, smooth), size, iterations, best))
           ++kept;
         break;
       }
+      // Smooth, but curved far more tightly than the size: a rim seen from near its cap's
+      // normal (6e-6 rad off it, its radius of curvature r / 6e-6), whose point turns as fast as
+      // the normal does over its distance from the axis. A forward difference then measures the
+      // Hessian delta / 6e-6 off, in the direction along the rim as well as in size, where the
+      // Hessian is nearly singular (the other core's curvature is 1e-4 of the rim's): the error
+      // made it indefinite, no step was taken, and the rim point stayed 4e-8 of the size off the
+      // contact. Central differences leave the square of their spacing over that angle instead.
+      // The two jumps measure the angle: over delta the derivative changes by delta / angle of
+      // itself, so the long jump differs from 16 short ones by that much. A spacing of 1e-4 of
+      // the angle (delta / 16 was still too coarse below 1e-5 rad from the axis) rounds to 1e-12
+      // of the derivative, the support points' rounding over a jump of r / angle times it.
+      const S bend = (S(16) * (closer.w - s) - (across.w - s)).norm() / (across.w - s).norm();
+      const S spacing = std::min(central, S(1e-4) * delta / bend);
+      SimplexVertexT<S> ahead1, back1, ahead2, back2;
+      diff.support(unit_of(V(u + spacing * t1)), ahead1);
+      diff.support(unit_of(V(u - spacing * t1)), back1);
+      diff.support(unit_of(V(u + spacing * t2)), ahead2);
+      diff.support(unit_of(V(u - spacing * t2)), back2);
+      iterations += 4;
+      d1 = (ahead1.w - back1.w) / (S(2) * spacing);
+      d2 = (ahead2.w - back2.w) / (S(2) * spacing);
+      stiff = true;
     }
-    // The support point's derivative along t_j, and the Hessian, symmetrised.
-    const V d1 = jump1 / delta, d2 = jump2 / delta;
+    // The Hessian, symmetrised.
     const S h11 = t1.dot(d1) - best.value, h22 = t2.dot(d2) - best.value;
     const S h12 = S(0.5) * (t1.dot(d2) + t2.dot(d1));
     const S det = h11 * h22 - h12 * h12;
@@ -271,19 +303,31 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
       }
       break;
     }
-    const V n = unit_of(V(u + x1 * t1 + x2 * t2));
-    SimplexVertexT<S> w;
-    diff.support(n, w);
-    ++iterations;
-    const S h = n.dot(w.w);
-    const S gradient_after = (w.w - h * n).norm();
     const S turn = std::hypot(x1, x2);
-    if (!std::isfinite(h) || !(h <= best.value + rounding) || !(gradient_after < gradient)) {
+    SimplexVertexT<S> full, w;
+    V n;
+    S h = S(0), gradient_after = S(0);
+    const auto try_step = [&](S part) {
+      n = unit_of(V(u + part * (x1 * t1 + x2 * t2)));
+      diff.support(n, w);
+      ++iterations;
+      h = n.dot(w.w);
+      gradient_after = (w.w - h * n).norm();
+      return std::isfinite(h) && h <= best.value + rounding && gradient_after < gradient;
+    };
+    bool improved = try_step(S(1));
+    full = w;
+    // Where the support point turns fast, the Hessian holds over a fraction of the angle to the
+    // rim's axis only, and a step can overshoot past the axis (1.5e-6 rad from a rim 1e-6 rad
+    // off its axis): shorter steps in the same direction.
+    for (S part = S(0.25); stiff && !improved && part >= S(1) / S(256); part *= S(0.25))
+      improved = try_step(part);
+    if (!improved) {
       // The step crossed a kink (the support point jumped further than the turn moves a smooth
       // one): the Hessian was one side's, whose minimum lies beyond the kink, and the minimum is
       // on the kink itself (a curved core against a polyhedral one's edge).
-      if (std::isfinite(h) && (w.w - s).norm() > S(4) * turn * size &&
-          secant_on_kink(diff, kink_edge(w, best.vertex, S(4) * turn * size), size, iterations,
+      if (is_finite(full.w) && (full.w - s).norm() > S(4) * turn * size &&
+          secant_on_kink(diff, kink_edge(full, best.vertex, S(4) * turn * size), size, iterations,
                          best))
         ++kept;
       break;
@@ -563,7 +607,8 @@ bool touching_witness(const CoreDifference<A, B>& diff, const Vec3T<typename A::
 }
 
 /// Newton steps on h from `best` (its value must be h(best.normal), its vertex that support
-/// point), at most `max_steps`, each 3 or 4 support calls (counted in `iterations`); `size` is
+/// point), at most `max_steps`, each 3 or 4 support calls, up to 12 where the support point turns
+/// much faster than the normal (counted in `iterations`); `size` is
 /// the sum of the bounding radii. A step across a kink (the support point jumps, and by as much
 /// for a turn 16 times smaller) hands over to secant_on_kink(). A face's normal nearby is then
 /// tried (snap_to_face()). The points come from the normal where one core is smooth and the
