@@ -101,27 +101,6 @@ KinkScene slant_scene(std::uint64_t seed) {
   return s;
 }
 
-KinkScene rim_scene(std::uint64_t seed) {
-  oracle::Rng rng(seed);
-  KinkScene s;
-  const Solid solid = random_solid(rng);
-  const double radius = solid.radius, half_height = solid.half_height;
-  s.solid = Shape::cylinder(radius, half_height).value();
-  // The top rim at azimuth phi; a normal tilted from the axis towards it by alpha is in the
-  // rim's cone of normals, and its support point is that rim point alone.
-  const double phi = rng.uniform(0, 2 * std::numbers::pi);
-  const double alpha = rng.log_uniform(0.005, 0.3);
-  const Vec3 e(radius * std::cos(phi), radius * std::sin(phi), half_height);
-  const Vec3 n(std::sin(alpha) * std::cos(phi), std::sin(alpha) * std::sin(phi), std::cos(alpha));
-  set_contact(solid, e, n, s);
-  s.gap = s.size * rng.log_uniform(1e-6, 1e-1);
-  place_ellipsoid(rng, s);
-  s.note = "cylinder rim, " + std::to_string(alpha) +
-           " rad from the axis, gap/size = " + std::to_string(s.gap / s.size) + ", " +
-           oracle::seed_note(seed);
-  return s;
-}
-
 // A rim point of a cylinder (top rim) or a cone (base rim) of the given size at azimuth phi, and
 // the normal there tilted by alpha from the rim's cap or base normal towards the rim: inside the
 // rim's cone of normals (alpha < pi / 2 for both), so that rim point alone is the support point.
@@ -137,6 +116,23 @@ RimPoint rim_point(bool cone, double radius, double half_height, double phi, dou
            : Shape::cylinder(radius, half_height).value(),
       Vec3(radius * std::cos(phi), radius * std::sin(phi), z * half_height),
       Vec3(std::sin(alpha) * std::cos(phi), std::sin(alpha) * std::sin(phi), z * std::cos(alpha))};
+}
+
+KinkScene rim_scene(std::uint64_t seed) {
+  oracle::Rng rng(seed);
+  KinkScene s;
+  const Solid solid = random_solid(rng);
+  const double phi = rng.uniform(0, 2 * std::numbers::pi);
+  const double alpha = rng.log_uniform(0.005, 0.3);
+  const RimPoint rim = rim_point(false, solid.radius, solid.half_height, phi, alpha);
+  s.solid = rim.shape;
+  set_contact(solid, rim.point, rim.normal, s);
+  s.gap = s.size * rng.log_uniform(1e-6, 1e-1);
+  place_ellipsoid(rng, s);
+  s.note = "cylinder rim, " + std::to_string(alpha) +
+           " rad from the axis, gap/size = " + std::to_string(s.gap / s.size) + ", " +
+           oracle::seed_note(seed);
+  return s;
 }
 
 // Rim against rim: the first shape's rim seen from 1e-5 to 1e-3 rad off its axis, the second's
