@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "mink/query/point_set_pair.hpp"
 #include "mink/query/scale_range.hpp"
 #include "mink/query/shape_queries.hpp"
 #include "mink/support/rounded.hpp"
@@ -29,6 +30,14 @@ inline void support_feature(const PolytopeRef& p, const Vec3& d, double toleranc
                             SupportFeatureT<double>& out) {
   mink::support_feature(*p.polytope, d, tolerance, out);
 }
+
+/// Its points for point_set_pair() (query/point_set_pair.hpp): the polytope's own.
+template <>
+struct PointSetCore<PolytopeRef> : std::true_type {
+  static int points(const PolytopeRef& p, Vec3* out) {
+    return PointSetCore<Polytope>::points(*p.polytope, out);
+  }
+};
 
 /// A hull shape held by pointer: support climbs from the shape's shared hint.
 struct HullRef {

@@ -25,6 +25,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/curved_kink_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/point_polytope_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/segment_box_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/point_set_pair_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/property/gjk_property_static_a_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/property/gjk_property_static_b_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/property/gjk_property_static_c_test.cpp

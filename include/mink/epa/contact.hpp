@@ -18,7 +18,10 @@
 /// do boxes whose cores are apart with closest points that its best axis gives in closed form
 /// (box_box_closest()). A sphere or point against a box or cylinder (or their rounded versions)
 /// is a closed form throughout, inside the solid or not (query/point_solid.hpp); a capsule or
-/// segment against a box while the cores are apart (query/segment_box.hpp).
+/// segment against a box while the cores are apart (query/segment_box.hpp). Small point sets
+/// (segments, triangles, polytopes of up to 8 points) that GJK or EPA leave at their caps, or
+/// whose cores are within 1e-8 of the size of touching, are answered by their features instead
+/// (query/point_set_pair.hpp): a thin A - B there left the normal up to 3e-7 rad off.
 ///
 /// Ties: when several normals are equally good the query returns one of them and sets
 /// `normal_chosen`. That happens when A - B has no volume where it meets the origin: concentric
@@ -259,11 +262,42 @@ ContactResultT<typename A::Scalar> contact_in_range(
     result.error_bound = std::max(S(0), cores.upper - cores.lower);
     result.status = cores.status;
   };
+  // Small point sets that GJK or EPA left unsure, or whose cores nearly touch, where the normal
+  // is ill-conditioned (a segment beside a needle triangle, 1e-8 rad from parallel: the normal
+  // 1e-7 rad off along the needle): by their features (query/point_set_pair.hpp).
+  auto answer_by_point_sets = [&] {
+    if constexpr (detail::kPointSetPair<A, B>) {
+      const S core_value = result.distance + radii - result.depth;
+      if (result.status != Status::IterationLimit &&
+          !(std::abs(core_value) <= S(detail::kPointSetNearTouching) * size))
+        return;
+      const auto sets = detail::point_set_pair(diff, touch);
+      if (!sets) return;
+      result.error_bound = S(0);
+      result.normal_chosen = false;
+      if (sets->apart) {
+        detail::contact_from_cores(pose_a.apply(sets->on_a), pose_a.apply(sets->on_b),
+                                   pose_a.rotate(sets->normal), sets->value, radius_a, radius_b,
+                                   inside, result);
+        result.status = result.intersect ? Status::Intersecting : Status::Separated;
+        return;
+      }
+      const Vec3T<S> n = sets->normal;
+      result.point_a = pose_a.apply(Vec3T<S>(sets->on_a + radius_a * n));
+      result.point_b = pose_a.apply(Vec3T<S>(sets->on_b - radius_b * n));
+      result.intersect = true;
+      result.distance = S(0);
+      result.depth = sets->value + radii;
+      result.normal = pose_a.rotate(n);
+      result.status = Status::Intersecting;
+    }
+  };
   // GJK proves the cores apart only with a separating plane (lower bound > touch). Without one
   // (a point inside a needle 1e-7 as thick as it is long: GJK's simplex there is too thin to
   // enclose the origin), EPA decides.
   if (gjk.upper > touch && gjk.lower > touch) {
     answer_apart(separate());
+    answer_by_point_sets();
     return result;
   }
   // Solids of revolution about parallel or nearly parallel axes: EPA in planes through an axis
@@ -329,6 +363,7 @@ ContactResultT<typename A::Scalar> contact_in_range(
   // interior, and separate_cores() tells apart from touching by the rule distance() uses.
   if (gjk.upper > touch && (epa.upper < -touch || epa.degenerate)) {
     answer_apart(separate());
+    answer_by_point_sets();
     return result;
   }
   // EPA's own depth below -touch, with GJK's upper bound also keeping the origin off, proves
@@ -344,6 +379,7 @@ ContactResultT<typename A::Scalar> contact_in_range(
     const auto cores = separate();
     if (cores.lower > touch || cores.status != Status::IterationLimit) {
       answer_apart(cores);
+      answer_by_point_sets();
       return result;
     }
   }
@@ -442,6 +478,7 @@ ContactResultT<typename A::Scalar> contact_in_range(
       axial_answer(S(detail::kAxialMaxTilt), S(detail::kAxialFallbackTilt),
                    result.depth + tolerances.relative_depth * size);
   }
+  answer_by_point_sets();
   return result;
 }
 

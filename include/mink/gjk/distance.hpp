@@ -41,6 +41,7 @@
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/separation.hpp"
 #include "mink/query/box_box.hpp"
+#include "mink/query/point_set_pair.hpp"
 #include "mink/query/point_solid.hpp"
 #include "mink/query/scale_range.hpp"
 #include "mink/query/segment_box.hpp"
@@ -228,6 +229,25 @@ DistanceResultT<typename A::Scalar> distance_in_range(
   // GJK stalled: settle_cores() tells, by the rule contact() shares (and where GJK's bracket
   // straddles touching, by contact()'s EPA).
   const auto cores = detail::settle_cores(diff, gjk, radii, size, tolerances, result.iterations);
+  if constexpr (detail::kPointSetPair<A, B>) {
+    // Small point sets that GJK left unsure, or nearly touching, where its normal is
+    // ill-conditioned (a segment beside a needle triangle): by their features.
+    if (cores.status == Status::IterationLimit ||
+        cores.upper <= S(detail::kPointSetNearTouching) * size) {
+      if (const auto sets = detail::point_set_pair(diff, touch)) {
+        result.error_bound = S(0);
+        if (!sets->apart || sets->value <= radii + touch) {
+          result.status = Status::Intersecting;
+          result.intersect = true;
+          return result;
+        }
+        detail::separated_from_cores(pose_a.apply(sets->on_a), pose_a.apply(sets->on_b),
+                                     pose_a.rotate(sets->normal), sets->value, radius_a, radius_b,
+                                     result);
+        return result;
+      }
+    }
+  }
   result.status = cores.status;
   if (cores.status == Status::Intersecting) {
     result.intersect = true;

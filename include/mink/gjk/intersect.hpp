@@ -21,6 +21,7 @@
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/separation.hpp"
 #include "mink/query/box_box.hpp"
+#include "mink/query/point_set_pair.hpp"
 #include "mink/query/point_solid.hpp"
 #include "mink/query/polytope_pair.hpp"
 #include "mink/query/scale_range.hpp"
@@ -134,6 +135,20 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
     }
   }
   const auto gjk = detail::run_gjk_boolean(diff, radius, size, tolerances, cache, first_computed);
+  // Small point sets that GJK left unsure (a segment beside a needle triangle), or decided only
+  // after more support calls than a well-posed pair takes: their features decide
+  // (query/point_set_pair.hpp), as in distance() and contact().
+  auto decide_by_point_sets = [&] {
+    if constexpr (detail::kPointSetPair<A, B>) {
+      if (result.status != Status::IterationLimit &&
+          result.iterations <= detail::kPointSetSuspectIterations)
+        return;
+      if (const auto sets = detail::point_set_pair(diff, tolerances.relative * size)) {
+        result.intersect = !sets->apart || sets->value <= reach;
+        result.status = result.intersect ? Status::Intersecting : Status::Separated;
+      }
+    }
+  };
   if (gjk.stalled) [[unlikely]] {
     // The distance loop and distance()'s rule decide, so that the two never disagree: the
     // distance loop's own Separated is not a proof (a needle 1e-8 thick that a box penetrated by
@@ -151,6 +166,7 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
           detail::settle_cores(diff, full, radius, size, tolerances, result.iterations).status;
     }
     result.intersect = result.status == Status::Intersecting;
+    decide_by_point_sets();
     return result;
   }
   result.status = gjk.status;
@@ -161,6 +177,7 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
   }
   result.intersect = gjk.status == Status::Intersecting ||
                      (gjk.status == Status::IterationLimit && gjk.upper <= reach);
+  decide_by_point_sets();
   return result;
 }
 
