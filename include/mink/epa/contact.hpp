@@ -271,7 +271,11 @@ ContactResultT<typename A::Scalar> contact_in_range(
       if (result.status != Status::IterationLimit &&
           !(std::abs(core_value) <= S(detail::kPointSetNearTouching) * size))
         return;
-      const auto sets = detail::point_set_pair(diff, touch);
+      const bool at_cap = result.status == Status::IterationLimit;
+      const auto sets =
+          detail::point_set_pair(diff, touch,
+                                 at_cap ? detail::kPointSetMaxPoints * detail::kPointSetMaxPoints
+                                        : detail::kPointSetNearTouchingMaxPairs);
       if (!sets) return;
       result.error_bound = S(0);
       result.normal_chosen = false;

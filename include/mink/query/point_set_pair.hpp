@@ -18,10 +18,11 @@
 /// Each normal is computed along the longer of its two edges' lines first (sliver_normal() for a
 /// triangle), so its tilt along that length, the costly one, is the rounding of its coordinates.
 ///
-/// Cost: a segment against a triangle tries 5 axes; two 8-point polytopes 896 axes and about
-/// 2,000 feature pairs (tens of microseconds). The queries call it only when GJK or EPA hit their
-/// caps or the cores are within kPointSetNearTouching of touching, where the normal is
-/// ill-conditioned.
+/// Cost: a segment against a triangle tries 5 axes (0.4 us), two 4-point needles 44 (7 us), two
+/// 8-point polytopes 896 (160 us); the feature pairs are pruned by their heights along the best
+/// axis. The queries call it only when GJK or EPA hit their caps, and where the cores are within
+/// kPointSetNearTouching of touching (the normal ill-conditioned) for sets whose sizes multiply
+/// to at most kPointSetNearTouchingMaxPairs.
 #pragma once
 
 #include <algorithm>
@@ -47,6 +48,12 @@ inline constexpr int kPointSetMaxPoints = 8;
 /// pair of point sets to point_set_pair() even when GJK and EPA converged: every normal the
 /// probes found off (stop 66: up to 3e-7 rad) was on cores within 5e-11 of the size of touching.
 inline constexpr double kPointSetNearTouching = 1e-8;
+
+/// Most products of the two sets' sizes that the queries hand to point_set_pair() where GJK or
+/// EPA converged and the cores only nearly touch: a segment against a triangle costs 0.4 us
+/// there, two needles of 4 points 7 us, two 8-point polytopes 160 us (this machine), too much for
+/// every resting contact of two hulls whose answer is already good. Pairs at a cap take any size.
+inline constexpr int kPointSetNearTouchingMaxPairs = 16;
 
 /// GJK's support calls beyond which intersect() checks its verdict on small point sets by their
 /// features: a tetrahedron of a difference flat to 1e-17 "enclosed" an origin 2e-11 off its
@@ -154,16 +161,36 @@ struct ClosestFeatures {
 /// The closest points of the hulls of point sets p and q (np, nq points), over every point of one
 /// against every triangle of the other and every edge (or point) of one against every edge (or
 /// point) of the other: their distance when the hulls are apart (a vertex over a face, two edges,
-/// or less), and an upper bound otherwise (an edge through a face has no such pair).
+/// or less), and an upper bound otherwise (an edge through a face has no such pair). A pair of
+/// features is skipped when their heights along the unit `axis` are already further apart than
+/// the best pair (its distance is no less than that), which leaves the features near the support
+/// planes of a separating or nearly separating axis.
 template <class S>
-ClosestFeatures<S> closest_features(const Vec3T<S>* p, int np, const Vec3T<S>* q, int nq) {
+ClosestFeatures<S> closest_features(const Vec3T<S>* p, int np, const Vec3T<S>* q, int nq,
+                                    const Vec3T<S>& axis) {
   using V = Vec3T<S>;
+  S height_p[kPointSetMaxPoints], height_q[kPointSetMaxPoints];
+  int top = 0, low = 0;
+  for (int i = 0; i < np; ++i) {
+    height_p[i] = axis.dot(p[i]);
+    if (height_p[i] > height_p[top]) top = i;
+  }
+  for (int j = 0; j < nq; ++j) {
+    height_q[j] = axis.dot(q[j]);
+    if (height_q[j] < height_q[low]) low = j;
+  }
+  // The support points along the axis are a pair: the bound to beat.
   ClosestFeatures<S> best;
-  S best_sq = std::numeric_limits<S>::infinity();
+  best.on_p = p[top];
+  best.on_q = q[low];
+  S best_sq = (best.on_q - best.on_p).squaredNorm();
+  auto beaten = [&best_sq](S gap) { return gap > S(0) && gap * gap >= best_sq; };
   for (int i = 0; i < np; ++i)
     for (int j = i; j < np; ++j)
       for (int k = 0; k < nq; ++k)
         for (int l = k; l < nq; ++l) {
+          if (beaten(std::min(height_q[k], height_q[l]) - std::max(height_p[i], height_p[j])))
+            continue;
           const CoreSegment<S> edge_p{S(0.5) * (p[i] + p[j]), S(0.5) * (p[j] - p[i])};
           const CoreSegment<S> edge_q{S(0.5) * (q[k] + q[l]), S(0.5) * (q[l] - q[k])};
           V on_p, on_q;
@@ -180,11 +207,16 @@ ClosestFeatures<S> closest_features(const Vec3T<S>* p, int np, const Vec3T<S>* q
           best.u = u;
           best.v = v;
         }
-  // A point against a triangle of the other set, as the origin against their difference.
-  auto point_triangles = [&](const V& point, const V* x, int count, bool point_in_p) {
+  // A point against a triangle of the other set, as the origin against their difference; the
+  // triangle's set lies beyond the point along the axis when the point is p's.
+  auto point_triangles = [&](const V& point, S height, const V* x, const S* heights, int count,
+                             bool point_in_p) {
     for (int i = 0; i < count; ++i)
       for (int j = i + 1; j < count; ++j)
         for (int k = j + 1; k < count; ++k) {
+          const S gap = point_in_p ? std::min({heights[i], heights[j], heights[k]}) - height
+                                   : height - std::max({heights[i], heights[j], heights[k]});
+          if (beaten(gap)) continue;
           const V w[3] = {x[i] - point, x[j] - point, x[k] - point};
           const SubSimplex<S> nearest = closest_on_triangle(w, 0, 1, 2);
           if (!(nearest.dist_sq < best_sq)) continue;
@@ -195,8 +227,8 @@ ClosestFeatures<S> closest_features(const Vec3T<S>* p, int np, const Vec3T<S>* q
           best.edges = false;
         }
   };
-  for (int i = 0; i < np; ++i) point_triangles(p[i], q, nq, true);
-  for (int j = 0; j < nq; ++j) point_triangles(q[j], p, np, false);
+  for (int i = 0; i < np; ++i) point_triangles(p[i], height_p[i], q, height_q, nq, true);
+  for (int j = 0; j < nq; ++j) point_triangles(q[j], height_q[j], p, height_p, np, false);
   best.distance = (best.on_q - best.on_p).norm();
   return best;
 }
@@ -264,16 +296,18 @@ bool face_witness(const Vec3T<S>* p, int np, const Vec3T<S>* q, int nq, const Ve
 /// The cores of `diff` as point sets (PointSetCore), by enumeration of their features (see the
 /// file's comment): nullopt when either has more than kPointSetMaxPoints points, when no
 /// candidate axis exists (all points on one line and every pair of lines parallel) or when a
-/// value is not finite. `touch` (unit: length): cores nearer than this count as touching.
+/// value is not finite, or when the product of the sets' sizes exceeds `max_pairs`. `touch`
+/// (unit: length): cores nearer than this count as touching.
 template <ConvexShape A, ConvexShape B>
-std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(const CoreDifference<A, B>& diff,
-                                                                 typename A::Scalar touch) {
+std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(
+    const CoreDifference<A, B>& diff, typename A::Scalar touch,
+    int max_pairs = kPointSetMaxPoints * kPointSetMaxPoints) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
   V p[kPointSetMaxPoints], q[kPointSetMaxPoints];
   const int np = PointSetCore<A>::points(diff.a, p);
   const int nq = PointSetCore<B>::points(diff.b, q);
-  if (np == 0 || nq == 0) return std::nullopt;
+  if (np == 0 || nq == 0 || np * nq > max_pairs) return std::nullopt;
   for (int j = 0; j < nq; ++j) q[j] = diff.rotation * q[j] + diff.translation;
 
   // The separating axis test: the largest gap over the candidate axes, on either side.
@@ -305,7 +339,10 @@ std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(const CoreDiffe
     for (int j = i + 1; j < np; ++j)
       for (int k = 0; k < nq; ++k)
         for (int l = k + 1; l < nq; ++l)
-          if (V n; edge_pair_normal(V(p[j] - p[i]), V(q[l] - q[k]), n)) offer(n);
+          if (V n; edge_pair_normal(V(p[j] - p[i]), V(q[l] - q[k]), n) &&
+                   // Neither side's gap exceeds the edges' own offset along n.
+                   std::abs(n.dot(V(q[k] - p[i]))) > best_gap)
+            offer(n);
   if (best_n == V::Zero()) {
     // Every edge on one line: any normal across it. The longest edge names the line.
     V line = V::Zero();
@@ -340,7 +377,7 @@ std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(const CoreDiffe
   if (!std::isfinite(best_gap) || !is_finite(best_n)) return std::nullopt;
 
   PointSetAnswer<S> answer;
-  const ClosestFeatures<S> closest = closest_features(p, np, q, nq);
+  const ClosestFeatures<S> closest = closest_features(p, np, q, nq, best_n);
   if (!(best_gap > touch)) {
     // The cores meet: the least overlap over the faces of A - B is the depth, along its axis.
     // Touching, a common point: the closest pair of features (within the tolerance of each
