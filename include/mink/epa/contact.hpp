@@ -271,11 +271,8 @@ ContactResultT<typename A::Scalar> contact_in_range(
       if (result.status != Status::IterationLimit &&
           !(std::abs(core_value) <= S(detail::kPointSetNearTouching) * size))
         return;
-      const bool at_cap = result.status == Status::IterationLimit;
-      const auto sets =
-          detail::point_set_pair(diff, touch,
-                                 at_cap ? detail::kPointSetMaxPoints * detail::kPointSetMaxPoints
-                                        : detail::kPointSetNearTouchingMaxPairs);
+      const auto sets = detail::point_set_pair(
+          diff, touch, detail::point_set_max_pairs(result.status == Status::IterationLimit));
       if (!sets) return;
       result.error_bound = S(0);
       result.normal_chosen = false;

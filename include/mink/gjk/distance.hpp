@@ -234,11 +234,8 @@ DistanceResultT<typename A::Scalar> distance_in_range(
     // ill-conditioned (a segment beside a needle triangle): by their features.
     if (cores.status == Status::IterationLimit ||
         cores.upper <= S(detail::kPointSetNearTouching) * size) {
-      const bool at_cap = cores.status == Status::IterationLimit;
       if (const auto sets = detail::point_set_pair(
-              diff, touch,
-              at_cap ? detail::kPointSetMaxPoints * detail::kPointSetMaxPoints
-                     : detail::kPointSetNearTouchingMaxPairs)) {
+              diff, touch, detail::point_set_max_pairs(cores.status == Status::IterationLimit))) {
         result.error_bound = S(0);
         if (!sets->apart || sets->value <= radii + touch) {
           result.status = Status::Intersecting;

@@ -55,6 +55,12 @@ inline constexpr double kPointSetNearTouching = 1e-8;
 /// every resting contact of two hulls whose answer is already good. Pairs at a cap take any size.
 inline constexpr int kPointSetNearTouchingMaxPairs = 16;
 
+/// The `max_pairs` the queries pass point_set_pair(): any size where GJK or EPA hit a cap, at
+/// most kPointSetNearTouchingMaxPairs where the cores only nearly touch.
+constexpr int point_set_max_pairs(bool at_cap) {
+  return at_cap ? kPointSetMaxPoints * kPointSetMaxPoints : kPointSetNearTouchingMaxPairs;
+}
+
 /// GJK's support calls beyond which intersect() checks its verdict on small point sets by their
 /// features: a tetrahedron of a difference flat to 1e-17 "enclosed" an origin 2e-11 off its
 /// plane after 50 calls (two needles 1e-10 rad from parallel). Well-posed pairs of up to 8
