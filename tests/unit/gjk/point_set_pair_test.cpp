@@ -175,4 +175,24 @@ TEST(PointSetPair, NeedlesNearlyParallel) {
   }
 }
 
+TEST(PointSetPair, SegmentBesideTwinSegmentsHasItsPairAlongTheNormal) {
+  // Stop 62's exact probe (gen2.py, seed 32): a segment against two copies of a segment
+  // 1e-13 apart (a 4-point needle), 1e-7 rad from parallel, 3.7944707610329096e-08 apart
+  // (exact rational arithmetic). The closest pair met the needle's 1e-13 end edge inside, and
+  // its direction, made orthogonal to that edge, came out 0.4 rad off: point_b - point_a lay
+  // 1.9e-9 of the size off distance x normal.
+  const std::vector<Vec3> a = {{-2.6336989316703496, -0.1159524004059812, 1.2356741968842602},
+                               {-1.4835790661293247, 1.8618605751287731, 1.1121038436991368}};
+  const std::vector<Vec3> b = {{-3.6527044612797606, -1.8682934958165247, 1.3451576191388908},
+                               {-1.9956312896388666, 0.9813057601749743, 1.167119229758487},
+                               {-3.6527044612797344, -1.8682934958165265, 1.3451576191389738},
+                               {-1.9956312896386248, 0.9813057601750913, 1.1671192297585589}};
+  Scene s;
+  s.a = a;
+  s.b = b;
+  s.offset = 3.7944707610329096e-08;
+  s.size = 7.229141935323582;  // the probe's: the sum of the bounding radii about the origin
+  check_pair(s, mink::Segment{a[0], a[1]}, polytope(b));
+}
+
 }  // namespace point_set_pair_test
