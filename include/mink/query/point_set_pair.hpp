@@ -351,12 +351,28 @@ std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(
     for (int j = 0; j < nq; ++j) low_q = std::min(low_q, n.dot(q[j]));
     return low_q - top_p;
   };
+  // One scan gives the gaps on both sides of n: along -n each height only changes its sign.
   auto offer = [&](const V& n) {
-    for (const V& side : {n, V(-n)})
-      if (const S gap = gap_along(side); gap > best_gap) {
-        best_gap = gap;
-        best_n = side;
-      }
+    S top_p = -std::numeric_limits<S>::infinity(), low_p = -top_p;
+    S top_q = top_p, low_q = low_p;
+    for (int i = 0; i < np; ++i) {
+      const S h = n.dot(p[i]);
+      top_p = std::max(top_p, h);
+      low_p = std::min(low_p, h);
+    }
+    for (int j = 0; j < nq; ++j) {
+      const S h = n.dot(q[j]);
+      top_q = std::max(top_q, h);
+      low_q = std::min(low_q, h);
+    }
+    if (const S gap = low_q - top_p; gap > best_gap) {
+      best_gap = gap;
+      best_n = n;
+    }
+    if (const S gap = low_p - top_q; gap > best_gap) {
+      best_gap = gap;
+      best_n = -n;
+    }
   };
   auto offer_faces = [&](const V* x, int count) {
     for (int i = 0; i < count; ++i)
@@ -408,16 +424,18 @@ std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(
   if (!std::isfinite(best_gap) || !is_finite(best_n)) return std::nullopt;
 
   PointSetAnswer<S> answer;
-  const ClosestFeatures<S> closest = closest_features(p, np, q, nq, best_n);
   if (!(best_gap > touch)) {
     // The cores meet: the least overlap over the faces of A - B is the depth, along its axis.
     // Touching, a common point: the closest pair of features (within the tolerance of each
     // other), else the point of the face nearest the origin. Deeper, that point's pair.
     answer.value = std::max(S(0), -best_gap);
     answer.normal = best_n;
-    if (answer.value <= touch && closest.distance <= touch) {
-      answer.on_a = answer.on_b = S(0.5) * (closest.on_p + closest.on_q);
-      return answer;
+    if (answer.value <= touch) {
+      if (const ClosestFeatures<S> closest = closest_features(p, np, q, nq, best_n);
+          closest.distance <= touch) {
+        answer.on_a = answer.on_b = S(0.5) * (closest.on_p + closest.on_q);
+        return answer;
+      }
     }
     if (!face_witness(p, np, q, nq, best_n, -best_gap, answer.on_a, answer.on_b))
       return std::nullopt;
@@ -425,6 +443,7 @@ std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(
     return answer;
   }
   // Apart: the closest pair of features; the best axis proves the gap.
+  const ClosestFeatures<S> closest = closest_features(p, np, q, nq, best_n);
   const S distance = closest.distance;
   if (!std::isfinite(distance) || !(distance > S(0))) return std::nullopt;
   answer.on_a = closest.on_p;
