@@ -272,7 +272,7 @@ ContactResultT<typename A::Scalar> contact_in_range(
           !(std::abs(core_value) <= S(detail::kPointSetNearTouching) * size))
         return;
       const auto sets = detail::point_set_pair(
-          diff, touch, detail::point_set_max_pairs(result.status == Status::IterationLimit));
+          diff, touch, detail::point_set_max_axes(result.status == Status::IterationLimit));
       if (!sets) return;
       result.error_bound = S(0);
       result.normal_chosen = false;

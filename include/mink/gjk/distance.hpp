@@ -235,7 +235,7 @@ DistanceResultT<typename A::Scalar> distance_in_range(
     if (cores.status == Status::IterationLimit ||
         cores.upper <= S(detail::kPointSetNearTouching) * size) {
       if (const auto sets = detail::point_set_pair(
-              diff, touch, detail::point_set_max_pairs(cores.status == Status::IterationLimit))) {
+              diff, touch, detail::point_set_max_axes(cores.status == Status::IterationLimit))) {
         result.error_bound = S(0);
         if (!sets->apart || sets->value <= radii + touch) {
           result.status = Status::Intersecting;

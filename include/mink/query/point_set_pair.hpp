@@ -1,7 +1,7 @@
 /// @file point_set_pair.hpp
-/// Two small point sets (segments, triangles, polytopes of up to kPointSetMaxPoints points, and
-/// their rounded versions) answered by enumeration of their features, where GJK and EPA are
-/// unsure of the answer.
+/// Two small point sets (segments, triangles, boxes, polytopes of up to kPointSetMaxPoints
+/// points, and their rounded versions) answered by enumeration of their features, where GJK and EPA
+/// are unsure of the answer.
 ///
 /// Where the Minkowski difference A - B is thin for its length (a segment beside a needle
 /// triangle 1e-12 wide, two needles 1e-8 rad from parallel) and the origin lies at or near its
@@ -18,21 +18,25 @@
 /// Each normal is computed along the longer of its two edges' lines first (sliver_normal() for a
 /// triangle), so its tilt along that length, the costly one, is the rounding of its coordinates.
 ///
-/// Cost: a segment against a triangle tries 5 axes (0.4 us), two 4-point needles 44 (7 us), two
-/// 8-point polytopes 896 (160 us); the feature pairs are pruned by their heights along the best
-/// axis. The queries call it only when GJK or EPA hit their caps, and where the cores are within
-/// kPointSetNearTouching of touching (the normal ill-conditioned) for sets whose sizes multiply
-/// to at most kPointSetNearTouchingMaxPairs.
+/// Cost: a segment against a triangle tries 4 axes (0.4 us), a triangle touching a box 13 (3 us
+/// with GJK's and EPA's first try), two 4-point needles 44 (7 us), two 8-point polytopes 896
+/// (160 us); the feature pairs are pruned by their heights along the best axis. The queries call
+/// it only when GJK or EPA hit their caps, and where the cores are within kPointSetNearTouching
+/// of touching (the normal ill-conditioned) for sets of at most kPointSetNearTouchingMaxAxes
+/// candidate axes.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 
 #include "mink/epa/epa.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/signed_volumes.hpp"
+#include "mink/query/box_box.hpp"
+#include "mink/shapes/box.hpp"
 #include "mink/shapes/point.hpp"
 #include "mink/shapes/polytope.hpp"
 #include "mink/shapes/segment.hpp"
@@ -49,16 +53,17 @@ inline constexpr int kPointSetMaxPoints = 8;
 /// probes found off (stop 66: up to 3e-7 rad) was on cores within 5e-11 of the size of touching.
 inline constexpr double kPointSetNearTouching = 1e-8;
 
-/// Most products of the two sets' sizes that the queries hand to point_set_pair() where GJK or
-/// EPA converged and the cores only nearly touch: a segment against a triangle costs 0.4 us
-/// there, two needles of 4 points 7 us, two 8-point polytopes 160 us (this machine), too much for
-/// every resting contact of two hulls whose answer is already good. Pairs at a cap take any size.
-inline constexpr int kPointSetNearTouchingMaxPairs = 16;
+/// Most candidate axes (point_set_axes()) of the pairs that the queries hand to point_set_pair()
+/// where GJK or EPA converged and the cores only nearly touch: a segment against 8 points (a
+/// triangle against a box takes 13, two needles of 4 points 44 and 7 us). Two 8-point polytopes
+/// try 896 axes in 160 us (this machine), too much for every resting contact of two hulls whose
+/// answer is already good. Pairs at a cap take any size.
+inline constexpr int kPointSetNearTouchingMaxAxes = 84;
 
-/// The `max_pairs` the queries pass point_set_pair(): any size where GJK or EPA hit a cap, at
-/// most kPointSetNearTouchingMaxPairs where the cores only nearly touch.
-constexpr int point_set_max_pairs(bool at_cap) {
-  return at_cap ? kPointSetMaxPoints * kPointSetMaxPoints : kPointSetNearTouchingMaxPairs;
+/// The `max_axes` the queries pass point_set_pair(): any number where GJK or EPA hit a cap, at
+/// most kPointSetNearTouchingMaxAxes where the cores only nearly touch.
+constexpr int point_set_max_axes(bool at_cap) {
+  return at_cap ? std::numeric_limits<int>::max() : kPointSetNearTouchingMaxAxes;
 }
 
 /// GJK's support calls beyond which intersect() checks its verdict on small point sets by their
@@ -108,12 +113,118 @@ struct PointSetCore<PolytopeT<S>> : std::true_type {
   }
 };
 
+/// A box as its 8 corners: a segment, triangle or small polytope beside a box face or edge, nearly
+/// parallel, has the thin difference of the file's comment too (a triangle 8e-9 rad from a box
+/// face hit GJK's cap; segments 5e-9 rad from an edge got normals 1.8e-9 of the size off).
+template <class S>
+struct PointSetCore<BoxT<S>> : std::true_type {
+  // Corner i has bit 1 set for +x, 2 for +y, 4 for +z (PointSet::list_box()).
+  static int points(const BoxT<S>& b, Vec3T<S>* out) {
+    const Vec3T<S>& h = b.half_extents;
+    for (int i = 0; i < 8; ++i)
+      out[i] = {i & 1 ? h.x() : -h.x(), i & 2 ? h.y() : -h.y(), i & 4 ? h.z() : -h.z()};
+    return 8;
+  }
+};
+
 template <class T>
 struct PointSetCore<Rounded<T>> : std::bool_constant<PointSetCore<T>::value> {
   static int points(const Rounded<T>& r, Vec3T<typename T::Scalar>* out) {
     return PointSetCore<T>::points(r.shape, out);
   }
 };
+
+/// Most pairs and triples of points that a PointSet lists (every pair and triple of 8 points).
+inline constexpr int kPointSetMaxEdges = kPointSetMaxPoints * (kPointSetMaxPoints - 1) / 2;
+inline constexpr int kPointSetMaxTriangles =
+    kPointSetMaxPoints * (kPointSetMaxPoints - 1) * (kPointSetMaxPoints - 2) / 6;
+
+/// A core as point_set_pair() enumerates it: its points, the pairs of them that may be edges of
+/// its hull and the triangles that may lie in its faces. A set of points alone lists every pair
+/// and every triple; a box lists its 12 edges and the 2 triangles of each face (of its 8 corners'
+/// 28 pairs and 56 triples: a segment touching a box took 11 us with them all).
+template <class S>
+struct PointSet {
+  Vec3T<S> points[kPointSetMaxPoints];
+  int count = 0;
+  int edges[kPointSetMaxEdges][2];  ///< a set of one point lists one edge, (0, 0)
+  int edge_count = 0;
+  int triangles[kPointSetMaxTriangles][3];
+  int triangle_count = 0;
+  /// The first edges and triangles that give every direction of an edge and every normal of a
+  /// face (the separating axis test's candidates): all of them unless the set knows better.
+  int axis_edges = 0, axis_triangles = 0;
+
+  std::span<const int[2]> edge_list() const { return {edges, std::size_t(edge_count)}; }
+  std::span<const int[3]> triangle_list() const { return {triangles, std::size_t(triangle_count)}; }
+
+  /// Every pair and every triple of the points.
+  void list_all() {
+    edge_count = triangle_count = 0;
+    if (count == 1) {
+      edges[0][0] = edges[0][1] = 0;
+      edge_count = 1;
+    }
+    for (int i = 0; i < count; ++i)
+      for (int j = i + 1; j < count; ++j) {
+        edges[edge_count][0] = i;
+        edges[edge_count++][1] = j;
+        for (int k = j + 1; k < count; ++k) {
+          triangles[triangle_count][0] = i;
+          triangles[triangle_count][1] = j;
+          triangles[triangle_count++][2] = k;
+        }
+      }
+    axis_edges = edge_count;
+    axis_triangles = triangle_count;
+  }
+
+  /// A box's 12 edges and the 2 triangles of each face, its corners in PointSetCore<BoxT>'s
+  /// order. One edge and one triangle per axis come first: the separating axis test needs only
+  /// those (3 directions and 3 face normals), the closest features all of them.
+  void list_box() {
+    edge_count = triangle_count = 0;
+    for (int pass = 0; pass < 2; ++pass)
+      for (int axis = 1; axis <= 4; axis <<= 1) {
+        // Along the axis: from each corner without its bit to the one with it.
+        for (int i = 0; i < 8; ++i)
+          if (!(i & axis) && (i == 0) == (pass == 0)) {
+            edges[edge_count][0] = i;
+            edges[edge_count++][1] = i | axis;
+          }
+        // The two faces across the axis, each cut along its diagonal c0-c3.
+        const int u = axis == 1 ? 2 : 1, v = axis == 4 ? 2 : 4;
+        for (const int side : {0, axis}) {
+          const int c0 = side, c1 = side | u, c2 = side | v, c3 = side | u | v;
+          const int cut[2][3] = {{c0, c1, c3}, {c0, c3, c2}};
+          for (int c = 0; c < 2; ++c) {
+            if ((side == 0 && c == 0) != (pass == 0)) continue;
+            for (int k = 0; k < 3; ++k) triangles[triangle_count][k] = cut[c][k];
+            ++triangle_count;
+          }
+        }
+      }
+    axis_edges = axis_triangles = 3;
+  }
+};
+
+/// `core` as a PointSet; false when it has too many points.
+template <class T>
+bool point_set_of(const T& core, PointSet<typename T::Scalar>& set) {
+  set.count = PointSetCore<T>::points(core, set.points);
+  if constexpr (BoxCore<T>::value)
+    set.list_box();
+  else
+    set.list_all();
+  return set.count > 0;
+}
+
+/// The separating axis test's candidate axes for sets p and q: a normal of each triangle, and of
+/// each pair of edges, one of each set.
+template <class S>
+int point_set_axes(const PointSet<S>& p, const PointSet<S>& q) {
+  return p.axis_triangles + q.axis_triangles + p.axis_edges * q.axis_edges;
+}
 
 /// Both cores are point sets, and not two segments or points (closed form, segment_cores.hpp).
 template <class A, class B>
@@ -164,17 +275,19 @@ struct ClosestFeatures {
   }
 };
 
-/// The closest points of the hulls of point sets p and q (np, nq points), over every point of one
-/// against every triangle of the other and every edge (or point) of one against every edge (or
-/// point) of the other: their distance when the hulls are apart (a vertex over a face, two edges,
-/// or less), and an upper bound otherwise (an edge through a face has no such pair). A pair of
-/// features is skipped when their heights along the unit `axis` are already further apart than
-/// the best pair (its distance is no less than that), which leaves the features near the support
-/// planes of a separating or nearly separating axis.
+/// The closest points of the hulls of point sets p and q, over every point of one against every
+/// triangle of the other and every edge of one against every edge of the other: their distance when
+/// the hulls are apart (a vertex over a face, two edges, or less), and an upper bound otherwise (an
+/// edge through a face has no such pair). A pair of features is skipped when their heights along
+/// the unit `axis` are already further apart than the best pair (its distance is no less than
+/// that), which leaves the features near the support planes of a separating or nearly separating
+/// axis.
 template <class S>
-ClosestFeatures<S> closest_features(const Vec3T<S>* p, int np, const Vec3T<S>* q, int nq,
+ClosestFeatures<S> closest_features(const PointSet<S>& set_p, const PointSet<S>& set_q,
                                     const Vec3T<S>& axis) {
   using V = Vec3T<S>;
+  const V *p = set_p.points, *q = set_q.points;
+  const int np = set_p.count, nq = set_q.count;
   S height_p[kPointSetMaxPoints], height_q[kPointSetMaxPoints];
   int top = 0, low = 0;
   for (int i = 0; i < np; ++i) {
@@ -191,75 +304,71 @@ ClosestFeatures<S> closest_features(const Vec3T<S>* p, int np, const Vec3T<S>* q
   best.on_q = q[low];
   S best_sq = (best.on_q - best.on_p).squaredNorm();
   auto beaten = [&best_sq](S gap) { return gap > S(0) && gap * gap >= best_sq; };
-  for (int i = 0; i < np; ++i)
-    for (int j = i; j < np; ++j)
-      for (int k = 0; k < nq; ++k)
-        for (int l = k; l < nq; ++l) {
-          if (beaten(std::min(height_q[k], height_q[l]) - std::max(height_p[i], height_p[j])))
-            continue;
-          const CoreSegment<S> edge_p{S(0.5) * (p[i] + p[j]), S(0.5) * (p[j] - p[i])};
-          const CoreSegment<S> edge_q{S(0.5) * (q[k] + q[l]), S(0.5) * (q[l] - q[k])};
-          V on_p, on_q;
-          S u, v;
-          closest_points_of_segments(edge_p, edge_q, on_p, on_q, &u, &v);
-          const S sq = (on_q - on_p).squaredNorm();
-          if (!(sq < best_sq)) continue;
-          best_sq = sq;
-          best.on_p = on_p;
-          best.on_q = on_q;
-          best.edges = true;
-          best.edge_p = edge_p;
-          best.edge_q = edge_q;
-          best.u = u;
-          best.v = v;
-        }
+  for (const auto& [i, j] : set_p.edge_list())
+    for (const auto& [k, l] : set_q.edge_list()) {
+      if (beaten(std::min(height_q[k], height_q[l]) - std::max(height_p[i], height_p[j]))) continue;
+      const CoreSegment<S> edge_p{S(0.5) * (p[i] + p[j]), S(0.5) * (p[j] - p[i])};
+      const CoreSegment<S> edge_q{S(0.5) * (q[k] + q[l]), S(0.5) * (q[l] - q[k])};
+      V on_p, on_q;
+      S u, v;
+      closest_points_of_segments(edge_p, edge_q, on_p, on_q, &u, &v);
+      const S sq = (on_q - on_p).squaredNorm();
+      if (!(sq < best_sq)) continue;
+      best_sq = sq;
+      best.on_p = on_p;
+      best.on_q = on_q;
+      best.edges = true;
+      best.edge_p = edge_p;
+      best.edge_q = edge_q;
+      best.u = u;
+      best.v = v;
+    }
   // A point against a triangle of the other set, as the origin against their difference; the
   // triangle's set lies beyond the point along the axis when the point is p's.
-  auto point_triangles = [&](const V& point, S height, const V* x, const S* heights, int count,
+  auto point_triangles = [&](const V& point, S height, const PointSet<S>& set, const S* heights,
                              bool point_in_p) {
-    for (int i = 0; i < count; ++i)
-      for (int j = i + 1; j < count; ++j)
-        for (int k = j + 1; k < count; ++k) {
-          const S gap = point_in_p ? std::min({heights[i], heights[j], heights[k]}) - height
-                                   : height - std::max({heights[i], heights[j], heights[k]});
-          if (beaten(gap)) continue;
-          const V w[3] = {x[i] - point, x[j] - point, x[k] - point};
-          const SubSimplex<S> nearest = closest_on_triangle(w, 0, 1, 2);
-          if (!(nearest.dist_sq < best_sq)) continue;
-          best_sq = nearest.dist_sq;
-          const V on_x = point + nearest.v;
-          best.on_p = point_in_p ? point : on_x;
-          best.on_q = point_in_p ? on_x : point;
-          // Inside the triangle or on an edge, the pair's direction is orthogonal to the longest
-          // edge among the corners it uses: kept as an edge pair (the point a segment of no
-          // length), so that the direction can be made so (a needle's face, whose long edge
-          // carries the costly tilt).
-          const int corner[3] = {i, j, k};
-          int from = -1, to = -1;
-          for (int c = 0; c < 3; ++c)
-            for (int e = c + 1; e < 3; ++e)
-              if ((nearest.mask >> c & 1u) && (nearest.mask >> e & 1u) &&
-                  (from < 0 ||
-                   (x[corner[e]] - x[corner[c]]).squaredNorm() > (x[to] - x[from]).squaredNorm())) {
-                from = corner[c];
-                to = corner[e];
-              }
-          best.edges = from >= 0;
-          if (!best.edges) continue;
-          const CoreSegment<S> at_point{point, V::Zero()};
-          const CoreSegment<S> edge{S(0.5) * (x[from] + x[to]), S(0.5) * (x[to] - x[from])};
-          const S along = edge.half.squaredNorm();
-          const S t = along > S(0)
-                          ? std::clamp(edge.half.dot(V(on_x - edge.centre)) / along, S(-1), S(1))
-                          : S(1);
-          best.edge_p = point_in_p ? at_point : edge;
-          best.edge_q = point_in_p ? edge : at_point;
-          best.u = point_in_p ? S(1) : t;
-          best.v = point_in_p ? t : S(1);
-        }
+    const V* x = set.points;
+    for (const auto& [i, j, k] : set.triangle_list()) {
+      const S gap = point_in_p ? std::min({heights[i], heights[j], heights[k]}) - height
+                               : height - std::max({heights[i], heights[j], heights[k]});
+      if (beaten(gap)) continue;
+      const V w[3] = {x[i] - point, x[j] - point, x[k] - point};
+      const SubSimplex<S> nearest = closest_on_triangle(w, 0, 1, 2);
+      if (!(nearest.dist_sq < best_sq)) continue;
+      best_sq = nearest.dist_sq;
+      const V on_x = point + nearest.v;
+      best.on_p = point_in_p ? point : on_x;
+      best.on_q = point_in_p ? on_x : point;
+      // Inside the triangle or on an edge, the pair's direction is orthogonal to the longest
+      // edge among the corners it uses: kept as an edge pair (the point a segment of no
+      // length), so that the direction can be made so (a needle's face, whose long edge
+      // carries the costly tilt).
+      const int corner[3] = {i, j, k};
+      int from = -1, to = -1;
+      for (int c = 0; c < 3; ++c)
+        for (int e = c + 1; e < 3; ++e)
+          if ((nearest.mask >> c & 1u) && (nearest.mask >> e & 1u) &&
+              (from < 0 ||
+               (x[corner[e]] - x[corner[c]]).squaredNorm() > (x[to] - x[from]).squaredNorm())) {
+            from = corner[c];
+            to = corner[e];
+          }
+      best.edges = from >= 0;
+      if (!best.edges) continue;
+      const CoreSegment<S> at_point{point, V::Zero()};
+      const CoreSegment<S> edge{S(0.5) * (x[from] + x[to]), S(0.5) * (x[to] - x[from])};
+      const S along = edge.half.squaredNorm();
+      const S t = along > S(0)
+                      ? std::clamp(edge.half.dot(V(on_x - edge.centre)) / along, S(-1), S(1))
+                      : S(1);
+      best.edge_p = point_in_p ? at_point : edge;
+      best.edge_q = point_in_p ? edge : at_point;
+      best.u = point_in_p ? S(1) : t;
+      best.v = point_in_p ? t : S(1);
+    }
   };
-  for (int i = 0; i < np; ++i) point_triangles(p[i], height_p[i], q, height_q, nq, true);
-  for (int j = 0; j < nq; ++j) point_triangles(q[j], height_q[j], p, height_p, np, false);
+  for (int i = 0; i < np; ++i) point_triangles(p[i], height_p[i], set_q, height_q, true);
+  for (int j = 0; j < nq; ++j) point_triangles(q[j], height_q[j], set_p, height_p, false);
   best.distance = (best.on_q - best.on_p).norm();
   return best;
 }
@@ -327,18 +436,21 @@ bool face_witness(const Vec3T<S>* p, int np, const Vec3T<S>* q, int nq, const Ve
 /// The cores of `diff` as point sets (PointSetCore), by enumeration of their features (see the
 /// file's comment): nullopt when either has more than kPointSetMaxPoints points, when no
 /// candidate axis exists (all points on one line and every pair of lines parallel) or when a
-/// value is not finite, or when the product of the sets' sizes exceeds `max_pairs`. `touch`
+/// value is not finite, or when the sets have more than `max_axes` candidate axes. `touch`
 /// (unit: length): cores nearer than this count as touching.
 template <ConvexShape A, ConvexShape B>
 std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(
     const CoreDifference<A, B>& diff, typename A::Scalar touch,
-    int max_pairs = kPointSetMaxPoints * kPointSetMaxPoints) {
+    int max_axes = std::numeric_limits<int>::max()) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  V p[kPointSetMaxPoints], q[kPointSetMaxPoints];
-  const int np = PointSetCore<A>::points(diff.a, p);
-  const int nq = PointSetCore<B>::points(diff.b, q);
-  if (np == 0 || nq == 0 || np * nq > max_pairs) return std::nullopt;
+  PointSet<S> set_p, set_q;
+  if (!point_set_of(diff.a, set_p) || !point_set_of(diff.b, set_q) ||
+      point_set_axes(set_p, set_q) > max_axes)
+    return std::nullopt;
+  V* const p = set_p.points;
+  V* const q = set_q.points;
+  const int np = set_p.count, nq = set_q.count;
   for (int j = 0; j < nq; ++j) q[j] = diff.rotation * q[j] + diff.translation;
 
   // The separating axis test: the largest gap over the candidate axes, on either side.
@@ -374,29 +486,22 @@ std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(
       best_n = -n;
     }
   };
-  auto offer_faces = [&](const V* x, int count) {
-    for (int i = 0; i < count; ++i)
-      for (int j = i + 1; j < count; ++j)
-        for (int k = j + 1; k < count; ++k)
-          if (V n; sliver_normal(x[i], x[j], x[k], n)) offer(n);
-  };
-  offer_faces(p, np);
-  offer_faces(q, nq);
-  for (int i = 0; i < np; ++i)
-    for (int j = i + 1; j < np; ++j)
-      for (int k = 0; k < nq; ++k)
-        for (int l = k + 1; l < nq; ++l)
-          if (V n; edge_pair_normal(V(p[j] - p[i]), V(q[l] - q[k]), n) &&
-                   // Neither side's gap exceeds the edges' own offset along n.
-                   std::abs(n.dot(V(q[k] - p[i]))) > best_gap)
-            offer(n);
+  for (const PointSet<S>* set : {&set_p, &set_q})
+    for (const auto& [i, j, k] : set->triangle_list().first(set->axis_triangles))
+      if (V n; sliver_normal(set->points[i], set->points[j], set->points[k], n)) offer(n);
+  for (const auto& [i, j] : set_p.edge_list().first(set_p.axis_edges))
+    for (const auto& [k, l] : set_q.edge_list().first(set_q.axis_edges))
+      if (V n; edge_pair_normal(V(p[j] - p[i]), V(q[l] - q[k]), n) &&
+               // Neither side's gap exceeds the edges' own offset along n.
+               std::abs(n.dot(V(q[k] - p[i]))) > best_gap)
+        offer(n);
   if (best_n == V::Zero()) {
     // Every edge on one line: any normal across it. The longest edge names the line.
     V line = V::Zero();
-    for (const V* x : {p, q})
-      for (int i = 0, count = x == p ? np : nq; i < count; ++i)
-        for (int j = i + 1; j < count; ++j)
-          if ((x[j] - x[i]).squaredNorm() > line.squaredNorm()) line = x[j] - x[i];
+    for (const PointSet<S>* set : {&set_p, &set_q})
+      for (const auto& [i, j] : set->edge_list())
+        if (const V edge = set->points[j] - set->points[i]; edge.squaredNorm() > line.squaredNorm())
+          line = edge;
     if (!(line.squaredNorm() > S(0))) return std::nullopt;  // two points: the closed form's
     offer(unit_of(orthogonal(line)));
   }
@@ -412,13 +517,9 @@ std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(
         low = std::min(low, h);
       }
     if (top - low <= touch) {
-      auto offer_in_plane = [&](const V* x, int count) {
-        for (int i = 0; i < count; ++i)
-          for (int j = i + 1; j < count; ++j)
-            if (V n; edge_pair_normal(m, V(x[j] - x[i]), n)) offer(n);
-      };
-      offer_in_plane(p, np);
-      offer_in_plane(q, nq);
+      for (const PointSet<S>* set : {&set_p, &set_q})
+        for (const auto& [i, j] : set->edge_list().first(set->axis_edges))
+          if (V n; edge_pair_normal(m, V(set->points[j] - set->points[i]), n)) offer(n);
     }
   }
   if (!std::isfinite(best_gap) || !is_finite(best_n)) return std::nullopt;
@@ -431,7 +532,7 @@ std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(
     answer.value = std::max(S(0), -best_gap);
     answer.normal = best_n;
     if (answer.value <= touch) {
-      if (const ClosestFeatures<S> closest = closest_features(p, np, q, nq, best_n);
+      if (const ClosestFeatures<S> closest = closest_features(set_p, set_q, best_n);
           closest.distance <= touch) {
         answer.on_a = answer.on_b = S(0.5) * (closest.on_p + closest.on_q);
         return answer;
@@ -443,7 +544,7 @@ std::optional<PointSetAnswer<typename A::Scalar>> point_set_pair(
     return answer;
   }
   // Apart: the closest pair of features; the best axis proves the gap.
-  const ClosestFeatures<S> closest = closest_features(p, np, q, nq, best_n);
+  const ClosestFeatures<S> closest = closest_features(set_p, set_q, best_n);
   const S distance = closest.distance;
   if (!std::isfinite(distance) || !(distance > S(0))) return std::nullopt;
   answer.on_a = closest.on_p;

@@ -195,4 +195,76 @@ TEST(PointSetPair, SegmentBesideTwinSegmentsHasItsPairAlongTheNormal) {
   check_pair(s, mink::Segment{a[0], a[1]}, polytope(b));
 }
 
+// A segment or triangle lying 3e-10 to 3e-7 rad from a box's top face, its lowest corner
+// `offset` above the face (or below it), every corner's shadow on the face at least a tenth of
+// the face's half width inside it. The answer is exact by construction: the signed distance is
+// the offset, along the face's normal, between the lowest corner and its shadow on the face (a
+// single pair: the other corners stand higher). Stop 66's probe (gen4.py, BOXSEG=hair): a triangle
+// 8e-9 rad from a face ran GJK to its cap, segments 5e-9 rad from a face got normals 1.8e-9 of the
+// size off.
+TEST(PointSetPair, SetNearlyParallelToABoxFace) {
+  oracle::Rng rng(6701);
+  for (int n = 0; n < 1500; ++n) {
+    const double scale = rng.log_uniform(0.1, 10);
+    const Vec3 half(scale * rng.uniform(0.2, 1), scale * rng.uniform(0.2, 1),
+                    scale * rng.uniform(0.2, 1));
+    const double offsets[] = {0, 1e-14, 1e-12, 1e-10, 1e-8};
+    double offset = offsets[rng.integer(0, 4)] * scale;
+    if (rng.chance(0.5)) offset = -offset;
+    const double tilt = rng.log_uniform(3e-10, 3e-7);
+    const int corners = rng.chance(0.5) ? 2 : 3;
+    // The corners' shadows, and their heights: the first lowest, the others up the tilt.
+    std::vector<Vec3> local;
+    for (int k = 0; k < corners; ++k) {
+      const Vec3 shadow(rng.uniform(-0.9, 0.9) * half.x(), rng.uniform(-0.9, 0.9) * half.y(), 0);
+      const double rise = k == 0 ? 0 : tilt * (shadow - Vec3(local[0].x(), local[0].y(), 0)).norm();
+      local.push_back(shadow + Vec3(0, 0, half.z() + offset + rise));
+    }
+    const Pose pose = Pose::from(rng.in_ball(scale), rng.rotation());
+    std::vector<Vec3> world;
+    for (const Vec3& p : local) world.push_back(pose.apply(p));
+    const mink::Box box{half};
+    const double size = 2 * (pose.translation.norm() + 2 * (half.norm() + scale));
+    SCOPED_TRACE(testing::Message() << "case " << n << ", offset " << offset << ", tilt " << tilt
+                                    << ", corners " << corners);
+    const Vec3 lowest = world[0], shadow = pose.apply(Vec3(local[0].x(), local[0].y(), half.z()));
+    const Vec3 up = pose.rotation.col(2);
+    // The world corners carry their rounding (1e-16 of the translation): within the bar.
+    auto expect_answer = [&](bool swapped, double value, const Vec3& normal, const Vec3& on_box,
+                             const Vec3& on_set) {
+      const double bar = 1e-9 * size;
+      EXPECT_NEAR(value, offset, bar);
+      EXPECT_LE((normal - (swapped ? -up : up)).norm() * size, bar) << "normal " << normal;
+      EXPECT_LE((on_box - shadow).norm(), bar);
+      EXPECT_LE((on_set - lowest).norm(), bar);
+    };
+    for (const bool swapped : {false, true}) {
+      SCOPED_TRACE(swapped ? "set, box" : "box, set");
+      auto check = [&](const auto& set) {
+        const auto c =
+            swapped ? mink::contact(set, Pose{}, box, pose) : mink::contact(box, pose, set, Pose{});
+        ASSERT_TRUE(c.status == mink::Status::Separated || c.status == mink::Status::Intersecting)
+            << oracle::describe(c);
+        expect_answer(swapped, c.intersect ? -c.depth : c.distance, c.normal,
+                      swapped ? c.point_b : c.point_a, swapped ? c.point_a : c.point_b);
+        const auto d = swapped ? mink::distance(set, Pose{}, box, pose)
+                               : mink::distance(box, pose, set, Pose{});
+        ASSERT_TRUE(d.status == mink::Status::Separated || d.status == mink::Status::Intersecting);
+        EXPECT_EQ(d.intersect, c.intersect);
+        if (!d.intersect)
+          expect_answer(swapped, d.distance, d.normal, swapped ? d.point_b : d.point_a,
+                        swapped ? d.point_a : d.point_b);
+        const auto i = swapped ? mink::intersect(set, Pose{}, box, pose)
+                               : mink::intersect(box, pose, set, Pose{});
+        EXPECT_NE(i.status, mink::Status::IterationLimit);
+        EXPECT_EQ(i.intersect, c.intersect);
+      };
+      if (corners == 2)
+        check(mink::Segment{world[0], world[1]});
+      else
+        check(mink::Triangle{world[0], world[1], world[2]});
+    }
+  }
+}
+
 }  // namespace point_set_pair_test
