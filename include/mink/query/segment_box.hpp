@@ -145,9 +145,7 @@ std::optional<SegmentBoxLocal<S>> segment_box_local(const Vec3T<S>& c, const Vec
 /// the box's centre, good to eps L in each coordinate on which the point lies beyond a face, and
 /// cores 1e-11 L apart had a normal 1e-5 rad off, whose support value along it missed the distance
 /// by 1e-5 of the size. The true direction is orthogonal to the segment where its point is
-/// interior, and to every box axis on which the point lies within the box's slab (there the gap
-/// is exactly 0 already); beyond one face only, the gap is along that face's axis exactly, unless
-/// the point lies on another axis's slab boundary (below).
+/// interior, and to every box axis on which the point lies inside the box's slab (below).
 template <class S>
 Vec3T<S> segment_box_direction(const SegmentBoxLocal<S>& local, const Vec3T<S>& plain) {
   if (!(std::abs(local.t) < S(1))) return plain;  // an end point: no constraint along the segment
@@ -160,42 +158,31 @@ Vec3T<S> segment_box_direction(const SegmentBoxLocal<S>& local, const Vec3T<S>& 
   if (!(std::abs(plain.dot(local.along)) * local.gap.norm() <=
         S(16) * kEps * std::sqrt(local.terms_sq) * local.along.norm()))
     return plain;
-  int beyond = 0, within = -1;
-  for (int i = 0; i < 3; ++i) {
-    if (local.gap[i] != S(0))
-      ++beyond;
-    else
-      within = i;
-  }
-  int edge_axis = -1;  // beyond one face only: the axis of the edge the point lies on, if any
-  if (beyond == 1) {
-    // Beyond one face k, on the boundary of another axis's slab to rounding: the point where a
-    // segment tilted from face k passes over its edge. The distance is stationary past that
-    // crossing, by less than t's rounding (a segment 1.7e-8 rad from the face, 1.9e-9 above its
-    // edge: 3e-17), where the gap leans off face k's axis by the tilt and is orthogonal to the
-    // segment; face k's axis, taken as it stood, was 1.7e-8 rad off, and its support value 4.5e-8
-    // of the size short of the distance.
-    int k = 0;
-    while (local.gap[k] == S(0)) ++k;
-    const S rounding = S(16) * kEps * std::sqrt(local.terms_sq);
-    // An axis along whose slab boundary the segment runs (it lies in that face's plane) has no
-    // edge that the segment passes over.
-    const S still = S(16) * kEps * local.along.norm();
-    for (int i = 0; i < 3; ++i) {
-      if (i == k || !(std::abs(local.along[i]) > still) ||
-          !(local.half_extents[i] - std::abs(local.on_segment[i]) <= rounding))
-        continue;
-      if (edge_axis >= 0) return plain;  // a corner: no single edge
-      edge_axis = i;
+  // The normal's component is 0 on the axes where the point lies inside the box's slab by more
+  // than rounding (the gap is 0 there); on the others, beyond a face or on a slab's boundary
+  // (over an edge or a corner), it is free, but must point out of the box. The distance is
+  // stationary past the point where a segment tilted from a face passes over its edge, by less
+  // than t's rounding, and there the gap leans off the face's axis by the tilt (a segment 1.7e-8
+  // rad from a face, 1.9e-9 above its edge: the face's axis was 1.7e-8 rad off, and its support
+  // value 4.5e-8 of the size short). A coordinate equal to a half extent is on the boundary, not
+  // inside: a segment 4e-9 rad from a face, over its corner 5.6e-10 away, had its normal held to
+  // that face's axis (it carried 2e-16 of rounding beyond a third face), and 1.5e-9 short.
+  const S rounding = S(16) * kEps * std::sqrt(local.terms_sq);
+  int inside = 0, slab = -1;
+  for (int i = 0; i < 3; ++i)
+    if (local.half_extents[i] - std::abs(local.on_segment[i]) > rounding) {
+      ++inside;
+      slab = i;
     }
-    if (edge_axis < 0) return plain;
-    within = 3 - k - edge_axis;
-  }
+  if (inside >= 2) return plain;  // over a face: along its axis exactly
   Vec3T<S> n = local.gap;
-  const Vec3T<S> slab = beyond <= 2 ? Vec3T<S>(Vec3T<S>::Unit(within)) : Vec3T<S>(Vec3T<S>::Zero());
-  if (!make_orthogonal(n, local.along, slab)) return plain;
-  // The lean must point out of the box across the edge, into the edge's cone of normals.
-  if (edge_axis >= 0 && n[edge_axis] * local.on_segment[edge_axis] < S(0)) return plain;
+  const Vec3T<S> held = inside == 1 ? Vec3T<S>(Vec3T<S>::Unit(slab)) : Vec3T<S>(Vec3T<S>::Zero());
+  if (!make_orthogonal(n, local.along, held)) return plain;
+  // Out of the box: no component against the point's side beyond rounding (a segment parallel to
+  // a face, its point 7e-18 beyond a side face, has a normal of -6e-17 along that side's axis).
+  for (int i = 0; i < 3; ++i)
+    if (i != slab && n[i] * local.on_segment[i] < -S(16) * kEps * std::abs(local.on_segment[i]))
+      return plain;
   return n;
 }
 
