@@ -269,7 +269,8 @@ ContactResultT<typename A::Scalar> contact_in_range(
     if constexpr (detail::kPointSetPair<A, B>) {
       const S core_value = result.distance + radii - result.depth;
       if (result.status != Status::IterationLimit &&
-          !(std::abs(core_value) <= S(detail::kPointSetNearTouching) * size))
+          !(detail::kPointSetNearTouchingPair<A, B> &&
+            std::abs(core_value) <= S(detail::kPointSetNearTouching) * size))
         return;
       const auto sets = detail::point_set_pair(
           diff, touch, detail::point_set_max_axes(result.status == Status::IterationLimit));

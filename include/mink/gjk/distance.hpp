@@ -233,7 +233,8 @@ DistanceResultT<typename A::Scalar> distance_in_range(
     // Small point sets that GJK left unsure, or nearly touching, where its normal is
     // ill-conditioned (a segment beside a needle triangle): by their features.
     if (cores.status == Status::IterationLimit ||
-        cores.upper <= S(detail::kPointSetNearTouching) * size) {
+        (detail::kPointSetNearTouchingPair<A, B> &&
+         cores.upper <= S(detail::kPointSetNearTouching) * size)) {
       if (const auto sets = detail::point_set_pair(
               diff, touch, detail::point_set_max_axes(cores.status == Status::IterationLimit))) {
         result.error_bound = S(0);
