@@ -203,6 +203,129 @@ bool secant_on_kink(const CoreDifference<A, B>& diff, Vec3T<typename A::Scalar> 
   return improved;
 }
 
+/// A kink of h ahead of `best` along the unit tangent `ahead`: the normal turned that way by
+/// 1e-6 rad, then ten times as far up to `reach`, until the support point jumps further than a
+/// smooth core's turns (kink_edge()); secant_on_kink() then finds the minimum on it. Returns
+/// whether `best` improved.
+template <ConvexShape A, ConvexShape B>
+bool kink_ahead(const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& ahead,
+                typename A::Scalar reach, typename A::Scalar size, int& iterations,
+                SupportMinimum<typename A::Scalar>& best) {
+  using S = typename A::Scalar;
+  for (S turn = S(1e-6); turn <= reach; turn *= S(10)) {
+    SimplexVertexT<S> w;
+    diff.support(unit_of(Vec3T<S>(best.normal + turn * ahead)), w);
+    ++iterations;
+    if ((w.w - best.vertex.w).norm() > S(4) * turn * size)
+      return secant_on_kink(diff, kink_edge(w, best.vertex, S(4) * turn * size), size, iterations,
+                            best);
+  }
+  return false;
+}
+
+/// The most Newton steps newton_about_axis() takes: each squares the error near the minimum, and
+/// three take the azimuth from 1e-1 off to rounding; a start 1e3 times too near or far from the
+/// axis takes three more.
+inline constexpr int kAxisNewtonMaxSteps = 12;
+
+/// Newton's method on h in polar coordinates about the unit `axis` of a cap (a cylinder's or
+/// cone's flat face, of radius `rim_radius`, whose rim holds one core's support point):
+/// u = cos(psi) axis + sin(psi) (cos(phi) e1 + sin(phi) e2). Seen from psi off its axis the rim's
+/// point turns 1 / sin(psi) as fast as the normal, and h's Hessian in Cartesian steps changes
+/// across a step itself: from 1e-7 rad off the axis, eight steps converged linearly and left the
+/// normal 8e-7 rad off, the rim point 1e-7 of the size off the contact (a flat rounded cylinder's
+/// rim against a cone's at 1e6; stop 62's curved probe, c11_2416). In (phi, psi) the rim's point
+/// moves with phi alone, at the rim's radius, and h is smooth: the slopes of h along phi (over
+/// sin(psi)) and psi are the parts of the support point w across u, w . t and w . e_psi, whose
+/// zero is the minimum. The start: phi where the rim faces `toward` (the other core's point from
+/// the cap's centre, seen along the axis; inside the rim there is no rim contact), psi as
+/// `best.normal` has it (within 0.1 rad of the axis). Each step solves the slopes' Jacobian by
+/// forward differences (1e-7 in phi, at most psi / 16 in psi, that side of the axis), and takes
+/// them to rounding in two or three steps near the minimum. `best` moves only to a witness pair
+/// (its points' offset across the normal within `witness_gap`, unit: length) whose value is no
+/// higher; 4 to 9 support calls a step (counted in `iterations`). Returns whether `best` moved.
+template <ConvexShape A, ConvexShape B>
+bool newton_about_axis(const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& axis,
+                       const Vec3T<typename A::Scalar>& toward, typename A::Scalar rim_radius,
+                       typename A::Scalar witness_gap, int& iterations,
+                       SupportMinimum<typename A::Scalar>& best) {
+  using S = typename A::Scalar;
+  using V = Vec3T<S>;
+  V e1, e2;
+  plane_basis(axis, e1, e2);
+  const S x = best.normal.dot(e1), y = best.normal.dot(e2);
+  S psi = std::atan2(std::hypot(x, y), best.normal.dot(axis));
+  if (!(psi <= S(0.1))) return false;
+  // The other core's point seen along the axis inside the rim: a face contact, no rim's.
+  const S tx = toward.dot(e1), ty = toward.dot(e2);
+  if (!(std::hypot(tx, ty) > rim_radius)) return false;
+  S phi = std::atan2(ty, tx);
+  psi = std::max(psi, S(1e-9));
+  struct Polar {
+    V u;
+    SimplexVertexT<S> w;
+    S along_phi, along_psi;  // w . t, w . e_psi: h's slopes, the first over sin(psi)
+  };
+  const auto at = [&](S phi_at, S psi_at) {
+    const S c = std::cos(phi_at), s = std::sin(phi_at);
+    const V radial = c * e1 + s * e2;
+    Polar p;
+    p.u = unit_of(V(std::cos(psi_at) * axis + std::sin(psi_at) * radial));
+    diff.support(p.u, p.w);
+    ++iterations;
+    p.along_phi = p.w.w.dot(V(c * e2 - s * e1));
+    p.along_psi = p.w.w.dot(V(std::cos(psi_at) * radial - std::sin(psi_at) * axis));
+    return p;
+  };
+  const auto slope = [](const Polar& p) { return std::hypot(p.along_phi, p.along_psi); };
+  Polar here = at(phi, psi);
+  for (int step = 0; step < kAxisNewtonMaxSteps; ++step) {
+    if (!(slope(here) > support_rounding(here.w))) break;
+    const S d_phi = S(1e-7), d_psi = std::min(S(1e-7), psi / S(16));
+    const Polar turned = at(phi + d_phi, psi), tilted = at(phi, psi + d_psi);
+    const S j11 = (turned.along_phi - here.along_phi) / d_phi,
+            j21 = (turned.along_psi - here.along_psi) / d_phi;
+    const S j12 = (tilted.along_phi - here.along_phi) / d_psi,
+            j22 = (tilted.along_psi - here.along_psi) / d_psi;
+    const S det = j11 * j22 - j12 * j21;
+    const S step_phi = -(j22 * here.along_phi - j12 * here.along_psi) / det;
+    const S step_psi = -(j11 * here.along_psi - j21 * here.along_phi) / det;
+    if (!std::isfinite(step_phi) || !std::isfinite(step_psi)) break;
+    // psi changes by at most 16 times a step, taken as it comes: where the step would take it
+    // further, the model holds at the scale of psi only (the minimum, say 2e-6 rad off the axis,
+    // is reached from 3e-9 or 5e-3 rad in three steps). Else the step is halved until the slopes
+    // shrink.
+    const S ratio = S(1) + step_psi / psi;
+    if (!(ratio >= S(1) / S(16) && ratio <= S(16))) {
+      psi = std::min(psi * std::clamp(ratio, S(1) / S(16), S(16)), S(0.1));
+      phi += step_phi;
+      here = at(phi, psi);
+      continue;
+    }
+    bool moved = false;
+    for (S part = S(1); !moved && part >= S(1) / S(32); part *= S(0.5)) {
+      const S next_psi = std::min(psi + part * step_psi, S(0.1));
+      const Polar next = at(phi + part * step_phi, next_psi);
+      if (slope(next) < slope(here)) {
+        phi += part * step_phi;
+        psi = next_psi;
+        here = next;
+        moved = true;
+      }
+    }
+    if (!moved) break;
+  }
+  const S h = here.u.dot(here.w.w);
+  if (!(std::isfinite(h) && h <= best.value + support_rounding(here.w) &&
+        (here.w.w - h * here.u).norm() <= witness_gap))
+    return false;
+  best.value = h;
+  best.normal = here.u;
+  best.vertex = here.w;
+  best.vertex.dir = here.u;
+  return true;
+}
+
 /// Newton steps that distance() and contact() allow (newton_on_support()). One or two reach the
 /// rounding from GJK's or EPA's normal where h is curved alike all round, and the steps stop
 /// there. Where one core's point turns 1e5 times faster than the normal (a rim seen from 1e-5 rad
@@ -294,18 +417,8 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
     // kink is looked for downhill, at 1e-6 to 1e-3 rad.
     const S x1 = -(h22 * g1 - h12 * g2) / det, x2 = -(h11 * g2 - h12 * g1) / det;
     if (!(h11 > S(0) && det > S(0) && std::isfinite(det) && std::hypot(x1, x2) <= S(1e-2))) {
-      const V downhill = -(g1 * t1 + g2 * t2) / gradient;
-      for (S reach = S(1e-6); reach <= S(1e-3); reach *= S(10)) {
-        SimplexVertexT<S> w;
-        diff.support(unit_of(V(u + reach * downhill)), w);
-        ++iterations;
-        if ((w.w - s).norm() > S(4) * reach * size) {
-          if (secant_on_kink(diff, kink_edge(w, best.vertex, S(4) * reach * size), size, iterations,
-                             best))
-            ++kept;
-          break;
-        }
-      }
+      if (kink_ahead(diff, V(-(g1 * t1 + g2 * t2) / gradient), S(1e-3), size, iterations, best))
+        ++kept;
       break;
     }
     const S turn = std::hypot(x1, x2);
@@ -328,13 +441,20 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
     for (S part = S(0.25); stiff && !improved && part >= S(1) / S(256); part *= S(0.25))
       improved = try_step(part);
     if (!improved) {
-      // The step crossed a kink (the support point jumped further than the turn moves a smooth
-      // one): the Hessian was one side's, whose minimum lies beyond the kink, and the minimum is
-      // on the kink itself (a curved core against a polyhedral one's edge).
-      if (is_finite(full.w) && (full.w - s).norm() > S(4) * turn * size &&
-          secant_on_kink(diff, kink_edge(full, best.vertex, S(4) * turn * size), size, iterations,
-                         best))
+      // The step crossed a kink: the Hessian was one side's, whose minimum lies beyond the kink,
+      // and the minimum is on the kink itself (a curved core against a polyhedral one's edge).
+      // Where the support point jumped further than the turn moves a smooth one, the jump shows
+      // the kink; else it is looked for along the step: a cylinder's side line (3.6e3 long, at
+      // 1.8e6) against a sphere's centre, 6e-7 rad beyond GJK's normal, drew a step of 5e-3 rad
+      // whose jump was no longer than a smooth core's over that turn, and the normal stayed 6e-7
+      // rad off, the points 2.4e-7 of the size off the contact.
+      if (is_finite(full.w) && (full.w - s).norm() > S(4) * turn * size) {
+        if (secant_on_kink(diff, kink_edge(full, best.vertex, S(4) * turn * size), size, iterations,
+                           best))
+          ++kept;
+      } else if (kink_ahead(diff, V((x1 * t1 + x2 * t2) / turn), turn, size, iterations, best)) {
         ++kept;
+      }
       break;
     }
     best.value = h;
@@ -627,8 +747,46 @@ template <ConvexShape A, ConvexShape B>
 int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
                       typename A::Scalar witness_gap, int max_steps, int& iterations,
                       SupportMinimum<typename A::Scalar>& best) {
-  const SupportMinimum<typename A::Scalar> start = best;
+  using S = typename A::Scalar;
+  const SupportMinimum<S> start = best;
   int kept = newton_steps(diff, size, max_steps, iterations, best);
+  if (!((best.vertex.w - best.value * best.normal).norm() <= witness_gap)) {
+    // Short of the minimum beside one core's cap, its rim seen from near its axis
+    // (newton_about_axis(); the rim's point at the minimum faces the other core's point seen
+    // along the axis). Both faces nearly parallel are flat_pair_witness()'s; a polytope's face
+    // has no rim, and its corner jumps with the azimuth.
+    SupportFeatureT<S> feature_a, feature_b;
+    core_features(diff, best.normal, S(kFaceSnapReach) * size, feature_a, feature_b);
+    const bool cap_a = feature_a.disc_radius > S(0) && feature_b.count < 3;
+    const bool cap_b = feature_b.disc_radius > S(0) && feature_a.count < 3;
+    if (cap_a) {
+      if (newton_about_axis(diff, feature_a.normal, Vec3T<S>(best.vertex.b - feature_a.disc_centre),
+                            feature_a.disc_radius, witness_gap, iterations, best))
+        return kept + 1;
+    } else if (cap_b) {
+      // In B's frame, where the cap's axis and the rim's point are exact: turned into A's, the
+      // normal's rounding across the axis (1e-16) turned the rim's point by 1e-16 / psi and kept
+      // the slopes from rounding 1e-7 rad off the axis.
+      const Mat3T<S> back = diff.rotation.transpose();
+      const CoreDifference<B, A> reversed{diff.b, diff.a, back, -(back * diff.translation)};
+      SupportMinimum<S> mirrored = best;
+      mirrored.normal = -(back * best.normal);
+      mirrored.vertex.a = back * (best.vertex.b - diff.translation);
+      mirrored.vertex.b = back * (best.vertex.a - diff.translation);
+      mirrored.vertex.w = mirrored.vertex.a - mirrored.vertex.b;
+      if (newton_about_axis(reversed, feature_b.normal,
+                            Vec3T<S>(mirrored.vertex.b - feature_b.disc_centre),
+                            feature_b.disc_radius, witness_gap, iterations, mirrored)) {
+        best.value = mirrored.value;
+        best.normal = unit_of(Vec3T<S>(-(diff.rotation * mirrored.normal)));
+        best.vertex.a = diff.rotation * mirrored.vertex.b + diff.translation;
+        best.vertex.b = diff.rotation * mirrored.vertex.a + diff.translation;
+        best.vertex.w = best.vertex.a - best.vertex.b;
+        best.vertex.dir = best.normal;
+        return kept + 1;
+      }
+    }
+  }
   if (snap_to_face(diff, size, iterations, best)) ++kept;
   if (feature_witness(diff, size, iterations, best)) ++kept;
   if (kept > 0 && !((best.vertex.w - best.value * best.normal).norm() <= witness_gap)) {
