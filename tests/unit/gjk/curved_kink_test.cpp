@@ -19,6 +19,7 @@
 //   and the points 1e-6 of the size (stop 62's curved probe, c11_112).
 // - A capsule's end beside a swept cylinder's side line: a kink that Newton's step crossed
 //   unseen (swept_side_scene()).
+// - A rim over a swept cone's base: the sum's face had lost its rim (swept_cap_scene()).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -213,6 +214,43 @@ KinkScene swept_side_scene(std::uint64_t seed) {
   return s;
 }
 
+// A cylinder's rim over the base of a cone swept along its axis by a segment: the sum's face is
+// the base moved by the segment's end, the rim's point (seen from 0.05 to 1.2 rad off its axis)
+// lies `gap` beyond a point e of it along the base's normal, often between the base's rim and
+// the polygon of 16 samples of it that stood for the sum's face: the point was taken to lie
+// outside the face, and the points stayed GJK's, 4e-7 of the size off (stop 62's curved probe,
+// c11_398).
+KinkScene swept_cap_scene(std::uint64_t seed) {
+  oracle::Rng rng(seed);
+  KinkScene s;
+  Solid solid = random_solid(rng);
+  const double sweep = rng.uniform(0.05, 0.5);
+  s.solid = Shape::sum(*Shape::segment(Vec3(0, 0, -sweep), Vec3(0, 0, sweep)),
+                       *Shape::cone(solid.radius, solid.half_height))
+                .value();
+  const double theta = rng.uniform(0, 2 * std::numbers::pi);
+  const double from_axis =
+      solid.radius * (rng.chance(0.5) ? rng.uniform(0.981, 0.999) : rng.uniform(0, 0.999));
+  const Vec3 e(from_axis * std::cos(theta), from_axis * std::sin(theta),
+               -solid.half_height - sweep);
+  set_contact(solid, e, Vec3(0, 0, -1), s);
+  s.size += sweep;
+  s.gap = s.size * rng.log_uniform(1e-6, 1e-1);
+  const double radius = rng.uniform(0.2, 1.5), half_height = rng.uniform(0.2, 1.5);
+  const double phi = rng.uniform(0, 2 * std::numbers::pi);
+  const double alpha = rng.uniform(0.05, 1.2);
+  const RimPoint rim = rim_point(false, radius, half_height, phi, alpha);
+  s.other = rim.shape;
+  const mink::Quat spin(Eigen::AngleAxisd(rng.uniform(0, 2 * std::numbers::pi), -s.normal));
+  const mink::Quat q = spin * mink::Quat::FromTwoVectors(rim.normal, -s.normal);
+  s.pose_other = Pose::from(Vec3(s.contact + s.gap * s.normal - q * rim.point), q);
+  s.size += std::hypot(radius, half_height);
+  s.note = "rim over a swept cone's base, " + std::to_string(from_axis / solid.radius) +
+           " of its radius from the axis, gap/size = " + std::to_string(s.gap / s.size) + ", " +
+           oracle::seed_note(seed);
+  return s;
+}
+
 double kink_far_rounding(const KinkScene& s) {
   return oracle::world_rounding(s.pose_solid.translation);
 }
@@ -265,6 +303,10 @@ TEST(CurvedKink, EllipsoidBesideACylinderRimNearItsAxis) {
 
 TEST(CurvedKink, CapsuleEndBesideASweptCylindersSide) {
   expect_exact_apart(swept_side_scene, 68100, oracle::sweep_count(300, 100));
+}
+
+TEST(CurvedKink, RimOverASweptConesBase) {
+  expect_exact_apart(swept_cap_scene, 68700, oracle::sweep_count(300, 100));
 }
 
 TEST(CurvedKink, RimBesideARimNearItsAxis) {
