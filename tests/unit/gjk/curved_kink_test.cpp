@@ -121,6 +121,15 @@ RimPoint rim_point(bool cone, double radius, double half_height, double phi, dou
       Vec3(std::sin(alpha) * std::cos(phi), std::sin(alpha) * std::sin(phi), z * std::cos(alpha))};
 }
 
+// The other shape: `rim` with its point at contact + gap n and its normal there along -n, turned
+// about n at random.
+void place_rim(oracle::Rng& rng, const RimPoint& rim, KinkScene& s) {
+  s.other = rim.shape;
+  const mink::Quat spin(Eigen::AngleAxisd(rng.uniform(0, 2 * std::numbers::pi), -s.normal));
+  const mink::Quat q = spin * mink::Quat::FromTwoVectors(rim.normal, -s.normal);
+  s.pose_other = Pose::from(Vec3(s.contact + s.gap * s.normal - q * rim.point), q);
+}
+
 KinkScene rim_scene(std::uint64_t seed) {
   oracle::Rng rng(seed);
   KinkScene s;
@@ -160,11 +169,7 @@ KinkScene rim_rim_scene(std::uint64_t seed, double near_lo, double near_hi) {
   const bool cone_b = rng.chance(0.5);
   const double phi_b = rng.uniform(0, 2 * std::numbers::pi);
   const double alpha_b = rng.log_uniform(1e-6, 1.2);
-  const RimPoint b = rim_point(cone_b, radius, half_height, phi_b, alpha_b);
-  s.other = b.shape;
-  const mink::Quat spin(Eigen::AngleAxisd(rng.uniform(0, 2 * std::numbers::pi), -s.normal));
-  const mink::Quat q = spin * mink::Quat::FromTwoVectors(b.normal, -s.normal);
-  s.pose_other = Pose::from(Vec3(s.contact + s.gap * s.normal - q * b.point), q);
+  place_rim(rng, rim_point(cone_b, radius, half_height, phi_b, alpha_b), s);
   s.size += std::hypot(radius, half_height);
   s.note = "rims, the first " + std::to_string(near_axis) +
            " rad from its axis, gap/size = " + std::to_string(s.gap / s.size) + ", " +
@@ -239,11 +244,7 @@ KinkScene swept_cap_scene(std::uint64_t seed) {
   const double radius = rng.uniform(0.2, 1.5), half_height = rng.uniform(0.2, 1.5);
   const double phi = rng.uniform(0, 2 * std::numbers::pi);
   const double alpha = rng.uniform(0.05, 1.2);
-  const RimPoint rim = rim_point(false, radius, half_height, phi, alpha);
-  s.other = rim.shape;
-  const mink::Quat spin(Eigen::AngleAxisd(rng.uniform(0, 2 * std::numbers::pi), -s.normal));
-  const mink::Quat q = spin * mink::Quat::FromTwoVectors(rim.normal, -s.normal);
-  s.pose_other = Pose::from(Vec3(s.contact + s.gap * s.normal - q * rim.point), q);
+  place_rim(rng, rim_point(false, radius, half_height, phi, alpha), s);
   s.size += std::hypot(radius, half_height);
   s.note = "rim over a swept cone's base, " + std::to_string(from_axis / solid.radius) +
            " of its radius from the axis, gap/size = " + std::to_string(s.gap / s.size) + ", " +
