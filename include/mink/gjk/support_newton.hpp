@@ -240,10 +240,11 @@ inline constexpr int kAxisNewtonMaxSteps = 12;
 /// zero is the minimum. The start: phi where the rim faces `toward` (the other core's point from
 /// the cap's centre, seen along the axis; inside the rim there is no rim contact), psi as
 /// `best.normal` has it (within 0.1 rad of the axis). Each step solves the slopes' Jacobian by
-/// forward differences (1e-7 in phi, at most psi / 16 in psi, that side of the axis), and takes
-/// them to rounding in two or three steps near the minimum. `best` moves only to a witness pair
-/// (its points' offset across the normal within `witness_gap`, unit: length) whose value is no
-/// higher; 4 to 9 support calls a step (counted in `iterations`). Returns whether `best` moved.
+/// forward differences (1e-7 in phi, at most psi / 16 in psi, that side of the axis; float's
+/// sqrt(eps) for 1e-7), and takes them to rounding in two or three steps near the minimum. `best`
+/// moves only to a witness pair (its points' offset across the normal within `witness_gap`, unit:
+/// length) whose value is no higher; 4 to 9 support calls a step (counted in `iterations`).
+/// Returns whether `best` moved.
 template <ConvexShape A, ConvexShape B>
 bool newton_about_axis(const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& axis,
                        const Vec3T<typename A::Scalar>& toward, typename A::Scalar rim_radius,
@@ -278,10 +279,12 @@ bool newton_about_axis(const CoreDifference<A, B>& diff, const Vec3T<typename A:
     return p;
   };
   const auto slope = [](const Polar& p) { return std::hypot(p.along_phi, p.along_psi); };
+  // The forward differences' step, as newton_steps()'s: 1e-7 in double, sqrt(eps) in float.
+  const S delta = std::max(S(1e-7), std::sqrt(std::numeric_limits<S>::epsilon()));
   Polar here = at(phi, psi);
   for (int step = 0; step < kAxisNewtonMaxSteps; ++step) {
     if (!(slope(here) > support_rounding(here.w))) break;
-    const S d_phi = S(1e-7), d_psi = std::min(S(1e-7), psi / S(16));
+    const S d_phi = delta, d_psi = std::min(delta, psi / S(16));
     const Polar turned = at(phi + d_phi, psi), tilted = at(phi, psi + d_psi);
     const S j11 = (turned.along_phi - here.along_phi) / d_phi,
             j21 = (turned.along_psi - here.along_psi) / d_phi;
