@@ -448,7 +448,7 @@ int newton_steps(const CoreDifference<A, B>& diff, typename A::Scalar size, int 
       // and the minimum is on the kink itself (a curved core against a polyhedral one's edge).
       // Where the support point jumped further than the turn moves a smooth one, the jump shows
       // the kink; else it is looked for along the step: a cylinder's side line (3.6e3 long, at
-      // 1.8e6) against a sphere's centre, 6e-7 rad beyond GJK's normal, drew a step of 5e-3 rad
+      // 1.8e6) against a capsule's end, 6e-7 rad beyond GJK's normal, drew a step of 5e-3 rad
       // whose jump was no longer than a smooth core's over that turn, and the normal stayed 6e-7
       // rad off, the points 2.4e-7 of the size off the contact.
       if (is_finite(full.w) && (full.w - s).norm() > S(4) * turn * size) {
@@ -736,16 +736,18 @@ bool touching_witness(const CoreDifference<A, B>& diff, const Vec3T<typename A::
 
 /// Newton steps on h from `best` (its value must be h(best.normal), its vertex that support
 /// point), at most `max_steps`, each 3 or 4 support calls, up to 12 where the support point turns
-/// much faster than the normal (counted in `iterations`); `size` is
-/// the sum of the bounding radii. A step across a kink (the support point jumps, and by as much
-/// for a turn 16 times smaller) hands over to secant_on_kink(). A face's normal nearby is then
-/// tried (snap_to_face()). The points come from the normal where one core is smooth and the
-/// other not, or where both show edges that cross (feature_witness(), one support call and two
-/// features). `best` only improves, and only to a vertex that is a witness pair: its points'
-/// offset vertex.w - value normal across the normal within `witness_gap` (unit: length). A flat
-/// face's support point is one corner of it, not the point of contact: an answer that keeps one is
-/// dropped and `best` left as it came (with its points from its normal, as above). Returns the
-/// number of steps kept, the points' placing counting one (0 when nothing changed).
+/// much faster than the normal (counted in `iterations`); `size` is the sum of the bounding radii.
+/// A step across a kink (the support point jumps, and by as much for a turn 16 times smaller)
+/// hands over to secant_on_kink(). Steps that end without a witness pair beside one core's cap go
+/// on about its axis (newton_about_axis()), and keep what they reach when it is one. Else a
+/// face's normal nearby is tried (snap_to_face()). The points come from the normal where one core
+/// is smooth and the other not, or where both show edges that cross (feature_witness(), one
+/// support call and two features). `best` only improves, and only to a vertex that is a witness
+/// pair: its points' offset vertex.w - value normal across the normal within `witness_gap` (unit:
+/// length). A flat face's support point is one corner of it, not the point of contact: an answer
+/// that keeps one is dropped and `best` left as it came (with its points from its normal, as
+/// above). Returns the number of steps kept, the points' placing counting one (0 when nothing
+/// changed).
 template <ConvexShape A, ConvexShape B>
 int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
                       typename A::Scalar witness_gap, int max_steps, int& iterations,
