@@ -703,11 +703,18 @@ bool witness_at_face(const CoreDifference<A, B>& diff, const Vec3T<typename A::S
   return feature_witness(diff, size, iterations, best);
 }
 
+/// Whether the points of `best` are a witness pair: their offset vertex.w - value normal across
+/// the normal within `gap` (unit: length).
+template <class S>
+bool is_witness_pair(const SupportMinimum<S>& best, S gap) {
+  return (best.vertex.w - best.value * best.normal).norm() <= gap;
+}
+
 /// Whether the pair of `best` lies its support value apart along its normal to rounding, so
 /// that both points are on their surfaces: what polytopes ask of witness_at_face()'s pair.
 template <class S>
 bool pair_on_support_planes(const SupportMinimum<S>& best) {
-  return (best.vertex.w - best.value * best.normal).norm() <= S(4) * support_rounding(best.vertex);
+  return is_witness_pair(best, S(4) * support_rounding(best.vertex));
 }
 
 /// The witness pair along the unit `normal` where the cores touch or nearly do, which Newton's
@@ -755,7 +762,7 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
   using S = typename A::Scalar;
   const SupportMinimum<S> start = best;
   int kept = newton_steps(diff, size, max_steps, iterations, best);
-  if (!((best.vertex.w - best.value * best.normal).norm() <= witness_gap)) {
+  if (!is_witness_pair(best, witness_gap)) {
     // Short of the minimum beside one core's cap, its rim seen from near its axis
     // (newton_about_axis(); the rim's point at the minimum faces the other core's point seen
     // along the axis). Both faces nearly parallel are flat_pair_witness()'s; a polytope's face
@@ -794,7 +801,7 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
   }
   if (snap_to_face(diff, size, iterations, best)) ++kept;
   if (feature_witness(diff, size, iterations, best)) ++kept;
-  if (kept > 0 && !((best.vertex.w - best.value * best.normal).norm() <= witness_gap)) {
+  if (kept > 0 && !is_witness_pair(best, witness_gap)) {
     best = start;
     return feature_witness(diff, size, iterations, best) ? 1 : 0;
   }

@@ -624,23 +624,35 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
   SupportFeatureT<S> cap;
   Vec3T<S> offset = Vec3T<S>::Zero();
   int caps = 0, others = 0;
-  for_each_part(n, tolerance, [&](const SupportFeatureT<S>& f) {
-    if (f.disc_radius > S(0)) {
-      cap = f;
-      ++caps;
-    } else if (f.count == 1) {
-      offset += f.points[0];
-    } else {
-      ++others;
-    }
-  });
+  Vec3T<S> first_near[kMaxNearPoints];
+  auto first_parts = [&](auto&& add) {
+    for_each_part(n, tolerance, [&](const SupportFeatureT<S>& f) {
+      if (f.disc_radius > S(0)) {
+        cap = f;
+        ++caps;
+      } else if (f.count == 1) {
+        offset += f.points[0];
+      } else {
+        ++others;
+      }
+      add(f);
+    });
+  };
+  const int first_count = sum_feature_points<S>(first_parts, n, first_near);
   if (caps == 1 && others == 0) {
     out = cap;
     for (int i = 0; i < out.count; ++i) out.points[i] += offset;
     out.disc_centre += offset;
     return;
   }
+  // point_set_feature()'s first round asks for `tolerance`, which the pass above has gathered.
+  bool first_round = true;
   auto gather = [&](S, S within, Vec3T<S>* near) {
+    if (first_round) {
+      first_round = false;
+      std::copy(first_near, first_near + first_count, near);
+      return first_count;
+    }
     auto parts = [&](auto&& add) { for_each_part(n, within, add); };
     return sum_feature_points<S>(parts, n, near);
   };

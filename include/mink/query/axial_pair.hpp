@@ -603,14 +603,14 @@ std::optional<AxialDepth<typename A::Scalar>> axial_depth(
       // And the planes through B's axis, the lesser depth: each axis's flat end has its kink at
       // a direction that only the planes through that axis hold for every angle, and the least
       // over the other axis's planes can dip there in a notch narrower than the scan (two thin
-      // discs rim to rim, axes 9e-3 rad apart, 1e-7 deep: 2.6e-8 too deep about one axis,
+      // discs face to face, axes 9e-3 rad apart, 1e-7 deep: 2.6e-8 too deep about one axis,
       // exact about the other).
+      // A scan about B's axis that gives up leaves A's answer as it was.
       auto about_b = tilted_axial_depth(diff, axis_b_in_a, w, centre_b, centre_a, size, tol);
-      if (!about_b) return about_b;
-      if (about_b->depth < out->depth) {
+      if (about_b && about_b->depth < out->depth) {
         about_b->iterations += out->iterations;
         out = about_b;
-      } else {
+      } else if (about_b) {
         out->iterations += about_b->iterations;
       }
     }
