@@ -804,16 +804,16 @@ bool newton_at_end(const CoreDifference<A, B>& diff,
 /// much faster than the normal (counted in `iterations`); `size` is the sum of the bounding radii.
 /// A step across a kink (the support point jumps, and by as much for a turn 16 times smaller)
 /// hands over to secant_on_kink(). Steps that end without a witness pair beside one core's cap go
-/// on about its axis (newton_about_axis()), and keep what they reach when it is one; beside an
-/// edge's end, with that end as a point (newton_at_end()). Else a face's normal nearby is tried
-/// (snap_to_face()), kept only with a witness pair along it. The points come from the normal where
-/// one core is smooth and the other not, or where both show edges that cross (feature_witness(),
-/// one support call and two features). `best` only improves, and only to a vertex that is a witness
-/// pair: its points' offset vertex.w - value normal across the normal within `witness_gap` (unit:
-/// length). A flat face's support point is one corner of it, not the point of contact: an answer
-/// that keeps one is dropped and `best` left as it came (with its points from its normal, as
-/// above). Returns the number of steps kept, the points' placing counting one (0 when nothing
-/// changed).
+/// on about its axis (newton_about_axis()), and keep what they reach when it is one. Else a
+/// face's normal nearby is tried (snap_to_face()), kept only with a witness pair along it. The
+/// points come from the normal where one core is smooth and the other not, or where both show
+/// edges that cross (feature_witness(), one support call and two features). `best` only
+/// improves, and only to a vertex that is a witness pair: its points' offset vertex.w - value
+/// normal across the normal within `witness_gap` (unit: length). A flat face's support point is
+/// one corner of it, not the point of contact: an answer that keeps one is dropped; last, an
+/// edge's end beside the minimum is tried as a point (newton_at_end()), else `best` is left as it
+/// came (with its points from its normal, as above). Returns the number of steps kept, the
+/// points' placing counting one (0 when nothing changed).
 template <ConvexShape A, ConvexShape B>
 int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
                       typename A::Scalar witness_gap, int max_steps, int& iterations,
@@ -821,12 +821,13 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
   using S = typename A::Scalar;
   const SupportMinimum<S> start = best;
   int kept = newton_steps(diff, size, max_steps, iterations, best);
+  SupportFeatureT<S> feature_a, feature_b;
+  bool beside_edge = false;
   if (!is_witness_pair(best, witness_gap)) {
     // Short of the minimum beside one core's cap, its rim seen from near its axis
     // (newton_about_axis(); the rim's point at the minimum faces the other core's point seen
     // along the axis). Both faces nearly parallel are flat_pair_witness()'s; a polytope's face
     // has no rim, and its corner jumps with the azimuth.
-    SupportFeatureT<S> feature_a, feature_b;
     core_features(diff, best.normal, S(kFaceSnapReach) * size, feature_a, feature_b);
     const bool cap_a = feature_a.disc_radius > S(0) && feature_b.count < 3;
     const bool cap_b = feature_b.disc_radius > S(0) && feature_a.count < 3;
@@ -857,9 +858,7 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
         return kept + 1;
       }
     }
-    if (!cap_a && !cap_b && (feature_a.count == 2 || feature_b.count == 2) &&
-        newton_at_end(diff, feature_a, feature_b, size, witness_gap, iterations, best))
-      return kept + 1;
+    beside_edge = !cap_a && !cap_b && (feature_a.count == 2 || feature_b.count == 2);
   }
   // A face's normal (or two edges') is kept only with a witness pair along it: h is flat to
   // second order about a minimum, and two edges' common normal 6.6e-9 rad off it (a capsule's
@@ -873,7 +872,15 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
     best = stepped;
   }
   if (feature_witness(diff, size, iterations, best)) ++kept;
-  if (kept > 0 && !is_witness_pair(best, witness_gap)) {
+  if (is_witness_pair(best, witness_gap)) return kept;
+  // Last, from Newton's normal beside an edge, its ends as points (newton_at_end()).
+  SupportMinimum<S> at_end = stepped;
+  if (beside_edge &&
+      newton_at_end(diff, feature_a, feature_b, size, witness_gap, iterations, at_end)) {
+    best = at_end;
+    return kept + 1;
+  }
+  if (kept > 0) {
     best = start;
     return feature_witness(diff, size, iterations, best) ? 1 : 0;
   }
