@@ -749,16 +749,35 @@ bool touching_witness(const CoreDifference<A, B>& diff, const Vec3T<typename A::
   return true;
 }
 
+/// A flat disc about `centre` with unit `normal` (a cylinder's cap), in its core's frame: what a
+/// side line's end on a rim stands for among that end's own directions (newton_at_end()).
+template <class S>
+struct DiscCore {
+  using Scalar = S;
+  Vec3T<S> centre, normal;
+  S radius;
+  Vec3T<S> support_core(const Vec3T<S>& d) const {
+    const Vec3T<S> across = d - d.dot(normal) * normal;
+    const S length = across.norm();
+    return length > S(0) ? Vec3T<S>(centre + (radius / length) * across) : centre;
+  }
+  S core_radius() const { return S(0); }
+  S bounding_radius() const { return length_of(centre) + radius; }
+  const char* error() const { return nullptr; }
+};
+
 /// Where a core's feature along the normal is an edge and the minimum lies just beyond one of
 /// its ends, among the directions whose support is that end (a capsule's end beside a cone's
 /// side line, their lines crossing 1e-6 beyond it): there h is flat to second order, the
 /// support values' rounding let a pair 3.6e-8 rad off pass as one at the edges' crossing, and
 /// the points stayed 5e-7 of the size off the contact (stop 62's curved probe, c11_2). Each end
-/// is taken as a point against the other core, a problem that Newton's steps solve to rounding,
-/// and its answer kept only where that core's support there is the end itself (a vertex, not a
-/// sample of a rim), the pair a witness pair within `witness_gap` and h no higher than at `best`.
-/// `feature_a` and `feature_b` are the cores' features along best.normal (core_features()).
-/// Support calls are counted in `iterations`; returns whether `best` moved.
+/// is taken as a point against the other core, and where the end lies on the rim of a cap along
+/// the edge (a cylinder's side line tilted 3e-8 rad off its plane, c11_521), as that cap: a
+/// problem that Newton's steps solve to rounding. Its answer is kept only where the full core's
+/// support along it is the reduced core's (a vertex, or the cap's rim point), the pair a witness
+/// pair within `witness_gap` and h no higher than at `best`. `feature_a` and `feature_b` are
+/// the cores' features along best.normal (core_features()). Support calls are counted in
+/// `iterations`; returns whether `best` moved.
 template <ConvexShape A, ConvexShape B>
 bool newton_at_end(const CoreDifference<A, B>& diff,
                    const SupportFeatureT<typename A::Scalar>& feature_a,
@@ -767,34 +786,59 @@ bool newton_at_end(const CoreDifference<A, B>& diff,
                    SupportMinimum<typename A::Scalar>& best) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  bool moved = false;
   // The reduced problem keeps A's frame, so its pair is the full one's.
-  const auto keep = [&](const SupportMinimum<S>& reduced, bool end_of_a, const V& end) {
-    if (!is_witness_pair(reduced, witness_gap)) return;
-    SimplexVertexT<S> full;
-    diff.support(reduced.normal, full);
-    ++iterations;
-    const S tolerance = S(4) * support_rounding(full);
-    const S h = reduced.normal.dot(full.w);
-    if (!((V(end_of_a ? full.a : full.b) - end).norm() <= tolerance) || !std::isfinite(h) ||
-        !(h <= best.value + tolerance) || !(std::abs(reduced.value - h) <= tolerance))
-      return;
-    best = reduced;
-    moved = true;
-  };
-  for (int i = 0; feature_a.count == 2 && i < 2; ++i) {
-    const PointT<S> end{feature_a.points[i]};
-    const CoreDifference<PointT<S>, B> reduced{end, diff.b, diff.rotation, diff.translation};
+  const auto solve = [&](const auto& reduced, bool end_of_a) {
     SupportMinimum<S> r = SupportMinimum<S>::at(reduced, best.normal, iterations);
     newton_steps(reduced, size, kNewtonMaxSteps, iterations, r);
-    keep(r, true, end.position);
+    if (!is_witness_pair(r, witness_gap)) return false;
+    SimplexVertexT<S> full, own;
+    diff.support(r.normal, full);
+    reduced.support(r.normal, own);
+    iterations += 2;
+    const S tolerance = S(4) * support_rounding(full);
+    const S h = r.normal.dot(full.w);
+    if (!(V(end_of_a ? V(full.a - own.a) : V(full.b - own.b)).norm() <= tolerance) ||
+        !std::isfinite(h) || !(h <= best.value + tolerance) ||
+        !(std::abs(r.value - h) <= tolerance))
+      return false;
+    best = r;
+    return true;
+  };
+  // The cap along the edge from `from` to the end `to` (the core's frame), when `to` is on its
+  // rim: a cylinder's side line ends on its caps' rims; a cone's slant on its base's, which
+  // does not lie along the slant and is left.
+  const S near = S(kFeatureWitnessTolerance) * size;
+  const auto cap_at = [&](const auto& core, const V& from, const V& to, DiscCore<S>& disc) {
+    SupportFeatureT<S> cap;
+    support_feature_of(core, V(unit_of(V(to - from))), near, cap);
+    if (!(cap.disc_radius > S(0))) return false;
+    disc = {cap.disc_centre, unit_of(cap.normal), cap.disc_radius};
+    const V offset = to - disc.centre;
+    return std::abs(offset.norm() - disc.radius) <= near &&
+           std::abs(offset.dot(disc.normal)) <= near;
+  };
+  bool moved = false;
+  for (int i = 0; feature_a.count == 2 && i < 2; ++i) {
+    const V& end = feature_a.points[i];
+    DiscCore<S> disc;
+    if (solve(CoreDifference<PointT<S>, B>{PointT<S>{end}, diff.b, diff.rotation, diff.translation},
+              true))
+      moved = true;
+    else if (cap_at(diff.a, feature_a.points[1 - i], end, disc) &&
+             solve(CoreDifference<DiscCore<S>, B>{disc, diff.b, diff.rotation, diff.translation},
+                   true))
+      moved = true;
   }
   for (int i = 0; feature_b.count == 2 && i < 2; ++i) {
-    const PointT<S> end{feature_b.points[i]};
-    const CoreDifference<A, PointT<S>> reduced{diff.a, end, diff.rotation, diff.translation};
-    SupportMinimum<S> r = SupportMinimum<S>::at(reduced, best.normal, iterations);
-    newton_steps(reduced, size, kNewtonMaxSteps, iterations, r);
-    keep(r, false, V(diff.rotation * end.position + diff.translation));
+    const V& end = feature_b.points[i];
+    DiscCore<S> disc;
+    if (solve(CoreDifference<A, PointT<S>>{diff.a, PointT<S>{end}, diff.rotation, diff.translation},
+              false))
+      moved = true;
+    else if (cap_at(diff.b, feature_b.points[1 - i], end, disc) &&
+             solve(CoreDifference<A, DiscCore<S>>{diff.a, disc, diff.rotation, diff.translation},
+                   false))
+      moved = true;
   }
   return moved;
 }

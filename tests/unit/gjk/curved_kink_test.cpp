@@ -20,8 +20,8 @@
 // - A capsule's end beside a swept cylinder's side line: a kink that Newton's step crossed
 //   unseen (swept_side_scene()).
 // - A rim over a swept cone's base: the sum's face had lost its rim (swept_cap_scene()).
-// - A capsule's end just short of where its axis crosses a side line seen along the normal
-//   (side_end_scene()).
+// - A capsule's end, or a cylinder's rim, just short of where its axis or side line crosses a
+//   side line seen along the normal (side_end_scene(), side_rim_scene()).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -255,17 +255,9 @@ KinkScene swept_cap_scene(std::uint64_t seed) {
   return s;
 }
 
-// A capsule's end beside a cone's side line or a cylinder's: the end's centre p lies
-// (gap + radius) beyond a point e of the line along its normal n, and the capsule's axis leaves p
-// rising from the line's tangent plane by 1e-9 to 1e-2 rad, at any angle to the line seen along
-// n. The solid lies below that plane and the rest of the axis above p, so p is the capsule's
-// nearest core point: the closest points are e and p - radius n. The minimum then lies among
-// the directions whose support is the capsule's end, within the rise of where the lines cross,
-// and h is flat there to second order: a pair 3.6e-8 rad off passed for one at the crossing, the
-// points 5e-7 of the size off (stop 62's curved probe, c11_2; newton_at_end()).
-KinkScene side_end_scene(std::uint64_t seed) {
-  oracle::Rng rng(seed);
-  KinkScene s;
+// A point e on a cone's side line or a cylinder's (random solid), its normal n there; returns
+// which solid.
+const char* place_on_side_line(oracle::Rng& rng, KinkScene& s) {
   const Solid solid = random_solid(rng);
   const double radius = solid.radius, half_height = solid.half_height;
   const double phi = rng.uniform(0, 2 * std::numbers::pi);
@@ -282,22 +274,81 @@ KinkScene side_end_scene(std::uint64_t seed) {
     set_contact(solid, Vec3(radius * radial + Vec3(0, 0, (2 * along_line - 1) * half_height)),
                 radial, s);
   }
-  s.gap = s.size * rng.log_uniform(1e-11, 1e-1);
-  const double capsule_radius = rng.uniform(0.1, 1), capsule_half = rng.uniform(0.1, 1);
-  s.other = Shape::capsule(capsule_radius, capsule_half).value();
-  const Vec3 t1 = s.normal.unitOrthogonal(), t2 = s.normal.cross(t1);
+  return cone ? "cone's" : "cylinder's";
+}
+
+// A direction rising 1e-9 to 1e-2 rad from the plane orthogonal to n, at any angle in it.
+Vec3 rising_axis(oracle::Rng& rng, const Vec3& n, double& rise) {
+  const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
   const double turn = rng.uniform(0, 2 * std::numbers::pi);
-  const double rise = rng.log_uniform(1e-9, 1e-2);
-  const Vec3 axis =
-      std::cos(rise) * (std::cos(turn) * t1 + std::sin(turn) * t2) + std::sin(rise) * s.normal;
-  const Vec3 end = s.contact + (s.gap + capsule_radius) * s.normal;
-  s.pose_other =
-      Pose::from(Vec3(end + capsule_half * axis), mink::Quat::FromTwoVectors(Vec3(0, 0, 1), axis));
-  s.size += capsule_radius + capsule_half;
-  char note[96];
-  std::snprintf(note, sizeof note, "%s side line, axis rising %.2e rad, gap/size = %.2e, ",
-                cone ? "cone's" : "cylinder's", rise, s.gap / s.size);
-  s.note = note + oracle::seed_note(seed);
+  rise = rng.log_uniform(1e-9, 1e-2);
+  return std::cos(rise) * (std::cos(turn) * t1 + std::sin(turn) * t2) + std::sin(rise) * n;
+}
+
+std::string rising_note(const char* solid, const char* what, double rise, const KinkScene& s,
+                        std::uint64_t seed) {
+  char note[128];
+  std::snprintf(note, sizeof note, "%s side line, %s rising %.2e rad, gap/size = %.2e, ", solid,
+                what, rise, s.gap / s.size);
+  return note + oracle::seed_note(seed);
+}
+
+// A capsule's end beside a cone's side line or a cylinder's: the end's centre p lies
+// (gap + radius) beyond the line's point e along its normal n, and the capsule's axis leaves p
+// rising from the line's tangent plane (rising_axis()). The solid lies below that plane and the
+// rest of the axis above p, so p is the capsule's nearest core point: the closest points are e
+// and p - radius n. The minimum then lies among the directions whose support is the capsule's
+// end, within the rise of where the lines cross, and h is flat there to second order: a pair
+// 3.6e-8 rad off passed for one at the crossing, the points 5e-7 of the size off (stop 62's
+// curved probe, c11_2; newton_at_end()).
+// What both scenes below draw, in this order: the side line's point, the gap, the other shape's
+// radius and half height, and its axis rising from the tangent plane.
+struct RisingScene {
+  KinkScene s;
+  const char* solid;
+  double radius, half_height, rise = 0;
+  Vec3 axis;
+};
+
+RisingScene rising_scene(oracle::Rng& rng) {
+  RisingScene r;
+  r.solid = place_on_side_line(rng, r.s);
+  r.s.gap = r.s.size * rng.log_uniform(1e-11, 1e-1);
+  r.radius = rng.uniform(0.1, 1);
+  r.half_height = rng.uniform(0.1, 1);
+  r.axis = rising_axis(rng, r.s.normal, r.rise);
+  return r;
+}
+
+KinkScene side_end_scene(std::uint64_t seed) {
+  oracle::Rng rng(seed);
+  RisingScene r = rising_scene(rng);
+  KinkScene& s = r.s;
+  s.other = Shape::capsule(r.radius, r.half_height).value();
+  const Vec3 end = s.contact + (s.gap + r.radius) * s.normal;
+  s.pose_other = Pose::from(Vec3(end + r.half_height * r.axis),
+                            mink::Quat::FromTwoVectors(Vec3(0, 0, 1), r.axis));
+  s.size += r.radius + r.half_height;
+  s.note = rising_note(r.solid, "capsule's axis", r.rise, s, seed);
+  return s;
+}
+
+// The same with a cylinder whose side line rises from the tangent plane: its support along -n
+// is the end of that line on its lower rim, q = c - h a + r u (a its axis, u the unit part of -n
+// across a), placed at e + gap n. That end is a rim's point, not a vertex, and newton_at_end()
+// takes the rim's cap instead (c11_521: the points 5e-7 of the size off).
+KinkScene side_rim_scene(std::uint64_t seed) {
+  oracle::Rng rng(seed);
+  RisingScene r = rising_scene(rng);
+  KinkScene& s = r.s;
+  s.other = Shape::cylinder(r.radius, r.half_height).value();
+  const Vec3 down = -s.normal;
+  const Vec3 across = (down - down.dot(r.axis) * r.axis).normalized();
+  const Vec3 centre = s.contact + s.gap * s.normal + r.half_height * r.axis - r.radius * across;
+  const mink::Quat spin(Eigen::AngleAxisd(rng.uniform(0, 2 * std::numbers::pi), r.axis));
+  s.pose_other = Pose::from(centre, spin * mink::Quat::FromTwoVectors(Vec3(0, 0, 1), r.axis));
+  s.size += std::hypot(r.radius, r.half_height);
+  s.note = rising_note(r.solid, "cylinder's side", r.rise, s, seed);
   return s;
 }
 
@@ -357,6 +408,10 @@ TEST(CurvedKink, CapsuleEndBesideASweptCylindersSide) {
 
 TEST(CurvedKink, CapsuleEndBesideASideLine) {
   expect_exact_apart(side_end_scene, 69100, oracle::sweep_count(300, 100));
+}
+
+TEST(CurvedKink, CylindersRimBesideASideLine) {
+  expect_exact_apart(side_rim_scene, 69500, oracle::sweep_count(300, 100));
 }
 
 TEST(CurvedKink, RimOverASweptConesBase) {
