@@ -621,30 +621,38 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
   // rim. As a polygon of its rim's samples, a point over the cap between the polygon and the rim
   // lay outside it, and a cylinder's rim over a cone's base swept by a segment kept GJK's points,
   // 4e-7 of the size off the contact (stop 62's curved probe, c11_398).
-  SupportFeatureT<S> cap;
+  // The parts' features are gathered once, classified, and summed only when no cap case: a sum
+  // of more parts than there is room for here asks them again for the outline.
+  constexpr int kStoredParts = 4;
+  SupportFeatureT<S> stored[kStoredParts], cap;
+  int part_count = 0, caps = 0, others = 0;
   Vec3T<S> offset = Vec3T<S>::Zero();
-  int caps = 0, others = 0;
-  Vec3T<S> first_near[kMaxNearPoints];
-  auto first_parts = [&](auto&& add) {
-    for_each_part(n, tolerance, [&](const SupportFeatureT<S>& f) {
-      if (f.disc_radius > S(0)) {
-        cap = f;
-        ++caps;
-      } else if (f.count == 1) {
-        offset += f.points[0];
-      } else {
-        ++others;
-      }
-      add(f);
-    });
-  };
-  const int first_count = sum_feature_points<S>(first_parts, n, first_near);
+  for_each_part(n, tolerance, [&](const SupportFeatureT<S>& f) {
+    if (f.disc_radius > S(0)) {
+      cap = f;
+      ++caps;
+    } else if (f.count == 1) {
+      offset += f.points[0];
+    } else {
+      ++others;
+    }
+    if (part_count < kStoredParts) stored[part_count] = f;
+    ++part_count;
+  });
   if (caps == 1 && others == 0) {
     out = cap;
     for (int i = 0; i < out.count; ++i) out.points[i] += offset;
     out.disc_centre += offset;
     return;
   }
+  Vec3T<S> first_near[kMaxNearPoints];
+  const auto stored_parts = [&](auto&& add) {
+    for (int i = 0; i < part_count; ++i) add(stored[i]);
+  };
+  const auto asked_parts = [&](auto&& add) { for_each_part(n, tolerance, add); };
+  const int first_count = part_count <= kStoredParts
+                              ? sum_feature_points<S>(stored_parts, n, first_near)
+                              : sum_feature_points<S>(asked_parts, n, first_near);
   // point_set_feature()'s first round asks for `tolerance`, which the pass above has gathered.
   bool first_round = true;
   auto gather = [&](S, S within, Vec3T<S>* near) {
