@@ -852,6 +852,162 @@ bool newton_at_end(const CoreDifference<A, B>& diff,
   return moved_a || moved_b;
 }
 
+/// Most Newton steps of rim_against_edge() on the rim's angle: each squares the error, and a start
+/// where the edge's shadow crosses the rim is within the tilt's lever of the root.
+inline constexpr int kRimEdgeMaxSteps = 16;
+
+/// Most times rim_against_edge() takes the features again along its normal: a side line's place
+/// round its core moves with the normal, by the normal's error times the core's radius (GJK's
+/// normal put a cylinder's side line 5e-6 of the size off, and the rim's point with it).
+inline constexpr int kRimEdgeMaxRounds = 6;
+
+/// Where one core's support feature along `best.normal` is a cap and the other's an edge, nearly
+/// parallel to each other, and the contact is the cap's rim against the edge: a cap tilted
+/// 1.5e-7 rad from a cylinder's side line, whose rim point is its support, left Newton's steps on
+/// h at GJK's normal (h has kinks across both the edge and the cap's normal there) and the points
+/// 7e-6 of the size off (stop 62's curved probe, c11_2318). The contact is a stationary pair of
+/// the rim's point q(phi) and the edge's line: their offset d is normal to the edge and to the
+/// rim's tangent t, so the normal is edge x t, and phi solves G(phi) = d . t = 0 (d the part of
+/// the line's point minus q across the edge), by Newton's method with
+/// G' = -r (1 - (t . edge)^2) - d . radial. It starts where the edge's shadow along the cap's axis
+/// crosses the rim (each crossing is tried), or where the rim is nearest that shadow; the
+/// features are taken again along each normal found (core_features(), within kFaceSnapReach of
+/// the size), up to kRimEdgeMaxRounds times, until they stay. Kept only where the line's point
+/// lies on the edge, the pair is a witness pair within `witness_gap` along edge x t, and the full
+/// cores' support value there is the pair's, no higher than at `best`, all to rounding.
+/// `disc_on_a`: the cap is A's (`feature_a`, the edge `feature_b`), else the reverse. Support
+/// calls are counted in `iterations`; returns whether `best` moved.
+template <ConvexShape A, ConvexShape B>
+bool rim_against_edge(const CoreDifference<A, B>& diff,
+                      SupportFeatureT<typename A::Scalar> feature_a,
+                      SupportFeatureT<typename A::Scalar> feature_b, bool disc_on_a,
+                      typename A::Scalar size, typename A::Scalar witness_gap, int& iterations,
+                      SupportMinimum<typename A::Scalar>& best) {
+  using S = typename A::Scalar;
+  using V = Vec3T<S>;
+  const S eps = std::numeric_limits<S>::epsilon();
+  // The cap and the edge in A's frame.
+  struct Pair {
+    V centre, axis, e1, e2, p0, along;
+    S radius, length;
+  };
+  const auto to_a = [&](const V& p, bool on_a) {
+    return on_a ? p : V(diff.rotation * p + diff.translation);
+  };
+  const auto take = [&](const SupportFeatureT<S>& disc, const SupportFeatureT<S>& edge, Pair& f) {
+    if (!(disc.disc_radius > S(0)) || edge.count != 2) return false;
+    f.centre = to_a(disc.disc_centre, disc_on_a);
+    f.axis = unit_of(disc_on_a ? disc.normal : V(diff.rotation * disc.normal));
+    f.radius = disc.disc_radius;
+    f.p0 = to_a(edge.points[0], !disc_on_a);
+    const V p1 = to_a(edge.points[1], !disc_on_a);
+    f.length = (p1 - f.p0).norm();
+    f.along = unit_of(V(p1 - f.p0));
+    if (!(f.length > S(0)) || !is_finite(f.axis) || !is_finite(f.along)) return false;
+    plane_basis(f.axis, f.e1, f.e2);
+    return true;
+  };
+  const auto features = [&](SupportFeatureT<S>& fa, SupportFeatureT<S>& fb, Pair& f) {
+    return disc_on_a ? take(fa, fb, f) : take(fb, fa, f);
+  };
+  Pair first;
+  if (!features(feature_a, feature_b, first)) return false;
+  // The edge's shadow on the cap's plane, about the centre: o + s k.
+  const V from_centre = first.p0 - first.centre;
+  const S ox = from_centre.dot(first.e1), oy = from_centre.dot(first.e2);
+  const S kx = first.along.dot(first.e1), ky = first.along.dot(first.e2);
+  const S kk = kx * kx + ky * ky;
+  if (!(kk > S(0.25))) return false;  // the edge is not nearly parallel to the cap
+  // Its nearest point to the centre, and where it crosses the rim.
+  const S s_near = -(ox * kx + oy * ky) / kk;
+  const S nx = ox + s_near * kx, ny = oy + s_near * ky;
+  const S miss_sq = nx * nx + ny * ny;
+  const S radius = first.radius;
+  V starts[2];  // rim directions, in A's frame
+  int start_count = 0;
+  if (miss_sq < radius * radius) {
+    const S half_chord = std::sqrt((radius * radius - miss_sq) / kk);
+    for (const S sign : {S(-1), S(1)}) {
+      const S s = s_near + sign * half_chord;
+      starts[start_count++] = (ox + s * kx) * first.e1 + (oy + s * ky) * first.e2;
+    }
+  } else {
+    starts[start_count++] = nx * first.e1 + ny * first.e2;
+  }
+  // Newton's steps on phi for the features `f`, from the rim's direction `toward`; the rim's
+  // point q, its tangent t and the line's parameter s at the root.
+  const auto solve = [&](const Pair& f, const V& toward, V& q, V& t, S& s) {
+    S phi = std::atan2(toward.dot(f.e2), toward.dot(f.e1));
+    V radial, d;
+    const auto at = [&](S angle) {
+      radial = std::cos(angle) * f.e1 + std::sin(angle) * f.e2;
+      t = f.axis.cross(radial);
+      q = f.centre + f.radius * radial;
+      const V to_line = f.p0 - q;
+      d = to_line - to_line.dot(f.along) * f.along;
+    };
+    at(phi);
+    for (int step = 0; step < kRimEdgeMaxSteps; ++step) {
+      const S along_t = t.dot(f.along);
+      const S slope = -f.radius * (S(1) - along_t * along_t) - d.dot(radial);
+      const S change = d.dot(t) / slope;
+      if (!std::isfinite(change)) return false;
+      phi -= change;
+      at(phi);
+      if (std::abs(change) <= S(4) * eps) break;
+    }
+    s = (q - f.p0).dot(f.along);
+    return true;
+  };
+  bool moved = false;
+  for (int i = 0; i < start_count; ++i) {
+    Pair f = first;
+    V toward = starts[i], q, t, u;
+    S s = S(0);
+    bool settled = false;
+    for (int round = 0; round < kRimEdgeMaxRounds && !settled; ++round) {
+      if (!solve(f, toward, q, t, s)) break;
+      u = unit_of(V(f.along.cross(t)));
+      if (!is_finite(u)) break;
+      if (u.dot(best.normal) < S(0)) u = -u;
+      toward = q - f.centre;
+      SupportFeatureT<S> fa, fb;
+      core_features(diff, u, S(kFaceSnapReach) * size, fa, fb);
+      Pair next;
+      if (!features(fa, fb, next)) break;
+      const S reach = S(64) * eps *
+                      std::max({f.centre.cwiseAbs().maxCoeff(), f.p0.cwiseAbs().maxCoeff(), size});
+      settled = (next.p0 - f.p0).norm() <= reach && (next.centre - f.centre).norm() <= reach &&
+                (next.axis - f.axis).norm() <= S(64) * eps &&
+                (next.along - f.along).norm() <= S(64) * eps;
+      f = next;
+    }
+    if (!settled) continue;
+    const S reach =
+        S(64) * eps * std::max({q.cwiseAbs().maxCoeff(), f.p0.cwiseAbs().maxCoeff(), f.length});
+    if (!(s >= -reach && s <= f.length + reach)) continue;
+    const V on_line = f.p0 + std::clamp(s, S(0), f.length) * f.along;
+    SimplexVertexT<S> pair;
+    pair.a = disc_on_a ? q : on_line;
+    pair.b = disc_on_a ? on_line : q;
+    pair.w = pair.a - pair.b;
+    pair.dir = u;
+    const S h = u.dot(pair.w);
+    SimplexVertexT<S> full;
+    diff.support(u, full);
+    ++iterations;
+    const S tolerance = S(4) * support_rounding(full);
+    if (!std::isfinite(h) || !(std::abs(u.dot(full.w) - h) <= tolerance) ||
+        !(h <= best.value + tolerance) || !((pair.w - h * u).norm() <= witness_gap))
+      continue;
+    best.value = h;
+    best.normal = u;
+    best.vertex = pair;
+    moved = true;
+  }
+  return moved;
+}
+
 /// Newton steps on h from `best` (its value must be h(best.normal), its vertex that support
 /// point), at most `max_steps`, each 3 or 4 support calls, up to 12 where the support point turns
 /// much faster than the normal (counted in `iterations`); `size` is the sum of the bounding radii.
@@ -911,6 +1067,12 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
         return kept + 1;
       }
     }
+    // A cap's rim against the other core's edge (rim_against_edge()).
+    if ((cap_a && feature_b.count == 2 &&
+         rim_against_edge(diff, feature_a, feature_b, true, size, witness_gap, iterations, best)) ||
+        (cap_b && feature_a.count == 2 &&
+         rim_against_edge(diff, feature_a, feature_b, false, size, witness_gap, iterations, best)))
+      return kept + 1;
     beside_edge = !cap_a && !cap_b && (feature_a.count == 2 || feature_b.count == 2);
   }
   // A face's normal (or two edges') is kept only with a witness pair along it: h is flat to
