@@ -879,22 +879,23 @@ inline constexpr int kRimEdgeMaxRounds = 6;
 /// calls are counted in `iterations`; returns whether `best` moved.
 template <ConvexShape A, ConvexShape B>
 bool rim_against_edge(const CoreDifference<A, B>& diff,
-                      SupportFeatureT<typename A::Scalar> feature_a,
-                      SupportFeatureT<typename A::Scalar> feature_b, bool disc_on_a,
+                      const SupportFeatureT<typename A::Scalar>& feature_a,
+                      const SupportFeatureT<typename A::Scalar>& feature_b, bool disc_on_a,
                       typename A::Scalar size, typename A::Scalar witness_gap, int& iterations,
                       SupportMinimum<typename A::Scalar>& best) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
   const S eps = std::numeric_limits<S>::epsilon();
   // The cap and the edge in A's frame.
-  struct Pair {
+  struct CapAndEdge {
     V centre, axis, e1, e2, p0, along;
     S radius, length;
   };
   const auto to_a = [&](const V& p, bool on_a) {
     return on_a ? p : V(diff.rotation * p + diff.translation);
   };
-  const auto take = [&](const SupportFeatureT<S>& disc, const SupportFeatureT<S>& edge, Pair& f) {
+  const auto take = [&](const SupportFeatureT<S>& disc, const SupportFeatureT<S>& edge,
+                        CapAndEdge& f) {
     if (!(disc.disc_radius > S(0)) || edge.count != 2) return false;
     f.centre = to_a(disc.disc_centre, disc_on_a);
     f.axis = unit_of(disc_on_a ? disc.normal : V(diff.rotation * disc.normal));
@@ -907,10 +908,11 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
     plane_basis(f.axis, f.e1, f.e2);
     return true;
   };
-  const auto features = [&](SupportFeatureT<S>& fa, SupportFeatureT<S>& fb, Pair& f) {
+  const auto features = [&](const SupportFeatureT<S>& fa, const SupportFeatureT<S>& fb,
+                            CapAndEdge& f) {
     return disc_on_a ? take(fa, fb, f) : take(fb, fa, f);
   };
-  Pair first;
+  CapAndEdge first;
   if (!features(feature_a, feature_b, first)) return false;
   // The edge's shadow on the cap's plane, about the centre: o + s k.
   const V from_centre = first.p0 - first.centre;
@@ -936,7 +938,7 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
   }
   // Newton's steps on phi for the features `f`, from the rim's direction `toward`; the rim's
   // point q, its tangent t and the line's parameter s at the root.
-  const auto solve = [&](const Pair& f, const V& toward, V& q, V& t, S& s) {
+  const auto solve = [&](const CapAndEdge& f, const V& toward, V& q, V& t, S& s) {
     S phi = std::atan2(toward.dot(f.e2), toward.dot(f.e1));
     V radial, d;
     const auto at = [&](S angle) {
@@ -961,7 +963,7 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
   };
   bool moved = false;
   for (int i = 0; i < start_count; ++i) {
-    Pair f = first;
+    CapAndEdge f = first;
     V toward = starts[i], q, t, u;
     S s = S(0);
     bool settled = false;
@@ -973,7 +975,7 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
       toward = q - f.centre;
       SupportFeatureT<S> fa, fb;
       core_features(diff, u, S(kFaceSnapReach) * size, fa, fb);
-      Pair next;
+      CapAndEdge next;
       if (!features(fa, fb, next)) break;
       const S reach = S(64) * eps *
                       std::max({f.centre.cwiseAbs().maxCoeff(), f.p0.cwiseAbs().maxCoeff(), size});
