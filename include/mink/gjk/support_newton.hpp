@@ -736,6 +736,28 @@ bool pair_on_support_planes(const SupportMinimum<S>& best) {
   return is_witness_pair(best, S(4) * support_rounding(best.vertex));
 }
 
+/// Whether `candidate` (a pair, its unit normal and its value along it, found on a part of the
+/// cores) may replace `best`: a witness pair within `witness_gap`, whose value is the full cores'
+/// support value along its normal and no higher than best's, both to 4 roundings of that
+/// support point. A pair on a part can sit below the full cores' support plane, where that part
+/// is not the support along the normal. `full` gets the full support point (one support call,
+/// counted in `iterations`, made only once the pair is a witness pair).
+template <ConvexShape A, ConvexShape B>
+bool is_full_support_witness(const CoreDifference<A, B>& diff,
+                             const SupportMinimum<typename A::Scalar>& candidate,
+                             typename A::Scalar witness_gap,
+                             const SupportMinimum<typename A::Scalar>& best, int& iterations,
+                             SimplexVertexT<typename A::Scalar>& full) {
+  using S = typename A::Scalar;
+  if (!is_witness_pair(candidate, witness_gap)) return false;
+  diff.support(candidate.normal, full);
+  ++iterations;
+  const S tolerance = S(4) * support_rounding(full);
+  const S h = candidate.normal.dot(full.w);
+  return std::isfinite(h) && std::isfinite(candidate.value) &&
+         std::abs(candidate.value - h) <= tolerance && candidate.value <= best.value + tolerance;
+}
+
 /// The witness pair along the unit `normal` where the cores touch or nearly do, which Newton's
 /// steps leave alone (the normal is ill-conditioned there): when one core has a single point on
 /// its support plane, that point and its shift onto the other core's plane, proved a point of it;
@@ -801,16 +823,13 @@ bool newton_at_end(const CoreDifference<A, B>& diff,
   const auto solve = [&](const auto& reduced, bool end_of_a) {
     SupportMinimum<S> r = SupportMinimum<S>::at(reduced, best.normal, iterations);
     newton_steps(reduced, size, kNewtonMaxSteps, iterations, r);
-    if (!is_witness_pair(r, witness_gap)) return false;
     SimplexVertexT<S> full, own;
-    diff.support(r.normal, full);
+    if (!is_full_support_witness(diff, r, witness_gap, best, iterations, full)) return false;
+    // The full core's support must be the reduced core's point, not another beside it.
     reduced.support(r.normal, own);
-    iterations += 2;
-    const S tolerance = S(4) * support_rounding(full);
-    const S h = r.normal.dot(full.w);
-    if (!(V(end_of_a ? V(full.a - own.a) : V(full.b - own.b)).norm() <= tolerance) ||
-        !std::isfinite(h) || !(h <= best.value + tolerance) ||
-        !(std::abs(r.value - h) <= tolerance))
+    ++iterations;
+    if (!(V(end_of_a ? V(full.a - own.a) : V(full.b - own.b)).norm() <=
+          S(4) * support_rounding(full)))
       return false;
     best = r;
     return true;
@@ -989,22 +1008,16 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
         S(64) * eps * std::max({q.cwiseAbs().maxCoeff(), f.p0.cwiseAbs().maxCoeff(), f.length});
     if (!(s >= -reach && s <= f.length + reach)) continue;
     const V on_line = f.p0 + std::clamp(s, S(0), f.length) * f.along;
-    SimplexVertexT<S> pair;
-    pair.a = disc_on_a ? q : on_line;
-    pair.b = disc_on_a ? on_line : q;
-    pair.w = pair.a - pair.b;
-    pair.dir = u;
-    const S h = u.dot(pair.w);
+    SupportMinimum<S> found;
+    found.vertex.a = disc_on_a ? q : on_line;
+    found.vertex.b = disc_on_a ? on_line : q;
+    found.vertex.w = found.vertex.a - found.vertex.b;
+    found.vertex.dir = u;
+    found.normal = u;
+    found.value = u.dot(found.vertex.w);
     SimplexVertexT<S> full;
-    diff.support(u, full);
-    ++iterations;
-    const S tolerance = S(4) * support_rounding(full);
-    if (!std::isfinite(h) || !(std::abs(u.dot(full.w) - h) <= tolerance) ||
-        !(h <= best.value + tolerance) || !((pair.w - h * u).norm() <= witness_gap))
-      continue;
-    best.value = h;
-    best.normal = u;
-    best.vertex = pair;
+    if (!is_full_support_witness(diff, found, witness_gap, best, iterations, full)) continue;
+    best = found;
     moved = true;
   }
   return moved;
