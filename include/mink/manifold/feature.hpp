@@ -59,17 +59,34 @@ struct SupportFeatureT {
   /// where the other feature's edges cross it). 0 for every other feature. (unit: length)
   S disc_radius = S(0);
   Vec3T<S> disc_centre = Vec3T<S>::Zero();
+  /// A single point on a cylinder's or cone's rim (a cap seen edge-on or from the side): the
+  /// rim is the circle of this radius about rim_centre, normal to the unit rim_axis (the cap's
+  /// outward normal). Where the contact is that rim against another core's edge, the point
+  /// moves along it (rim_against_edge()). 0 for every other feature, caps included, which
+  /// keep their rim in disc_radius. (unit: length)
+  S rim_radius = S(0);
+  Vec3T<S> rim_centre = Vec3T<S>::Zero();
+  Vec3T<S> rim_axis = Vec3T<S>::UnitZ();
 
   void set_point(const Vec3T<S>& p) {
     count = 1;
     points[0] = p;
     disc_radius = S(0);
+    rim_radius = S(0);
+  }
+  /// The point p on the rim of `radius` about `centre`, normal to the unit `axis`.
+  void set_rim_point(const Vec3T<S>& p, const Vec3T<S>& centre, const Vec3T<S>& axis, S radius) {
+    set_point(p);
+    rim_radius = radius;
+    rim_centre = centre;
+    rim_axis = axis;
   }
   void set_edge(const Vec3T<S>& p, const Vec3T<S>& q) {
     count = 2;
     points[0] = p;
     points[1] = q;
     disc_radius = S(0);
+    rim_radius = S(0);
   }
 };
 
@@ -156,6 +173,7 @@ void feature_from_points(const Vec3T<S>* points, int count, const Vec3T<S>& n,
   const int kept = std::min(n_hull, kMaxFeaturePoints);
   out.count = kept;
   out.disc_radius = S(0);
+  out.rim_radius = S(0);
   for (int j = 0; j < kept; ++j) out.points[j] = points[corners[(j * n_hull) / kept]];
   Vec3T<S> normal = Vec3T<S>::Zero();
   for (int j = 0; j < kept; ++j) {
@@ -172,6 +190,7 @@ template <class S>
 void rim_feature(S radius, S z, S z_normal, SupportFeatureT<S>& out) {
   out.count = kMaxFeaturePoints;
   out.disc_radius = radius;
+  out.rim_radius = S(0);
   out.disc_centre = {S(0), S(0), z};
   out.normal = Vec3T<S>(S(0), S(0), z_normal >= S(0) ? S(1) : S(-1));
   for (int i = 0; i < kMaxFeaturePoints; ++i) {
@@ -179,6 +198,19 @@ void rim_feature(S radius, S z, S z_normal, SupportFeatureT<S>& out) {
     const S c = std::cos(angle), s = std::sin(angle);
     out.points[z_normal >= S(0) ? i : kMaxFeaturePoints - 1 - i] = {radius * c, radius * s, z};
   }
+}
+
+/// The support point along d of a cylinder or cone (`shape`), with its rim when it lies on the
+/// rim of the cap whose outward normal is (0, 0, `cap_side`): a cone's apex, a cap's centre (d
+/// along the axis) and the point of a rim of radius 0 are plain points.
+template <class Shape, class S>
+void set_core_point(const Shape& shape, const Vec3T<S>& d, S cap_side, SupportFeatureT<S>& out) {
+  const Vec3T<S> p = shape.support_core(d);
+  const Vec3T<S> centre(S(0), S(0), p.z());
+  if (shape.radius > S(0) && (p.x() != S(0) || p.y() != S(0)))
+    out.set_rim_point(p, centre, Vec3T<S>(S(0), S(0), cap_side), shape.radius);
+  else
+    out.set_point(p);
 }
 
 }  // namespace detail
@@ -315,6 +347,7 @@ void support_feature(const BoxT<S>& box, const Vec3T<S>& d, S tolerance, Support
                                          Vec3T<S>::Zero().eval(), S(0), Vec3T<S>::Zero().eval(),
                                          out.points);
   out.disc_radius = S(0);
+  out.rim_radius = S(0);
   if (f.face_axis >= 0)
     out.normal = Vec3T<S>::Unit(f.face_axis) * detail::sign_nonneg(d[f.face_axis]);
 }
@@ -356,7 +389,7 @@ void support_feature(const CylinderT<S>& cylinder, const Vec3T<S>& d, S toleranc
     out.set_edge({r * ux, r * uy, -h}, {r * ux, r * uy, h});
     return;
   }
-  out.set_point(cylinder.support_core(d));
+  detail::set_core_point(cylinder, d, S(detail::sign_nonneg(d.z())), out);
 }
 
 template <class S>
@@ -382,7 +415,7 @@ void support_feature(const ConeT<S>& cone, const Vec3T<S>& d, S tolerance,
     out.set_edge({S(0), S(0), h}, {r * ux, r * uy, -h});
     return;
   }
-  out.set_point(cone.support_core(d));
+  detail::set_core_point(cone, d, S(-1), out);
 }
 
 template <class S>
@@ -491,6 +524,7 @@ void support_feature(const ConvexHullShapeT<S>& hull, const Vec3T<S>& d, S toler
       const int corners = int(loop.size());
       out.count = std::min(corners, kMaxFeaturePoints);
       out.disc_radius = S(0);
+      out.rim_radius = S(0);
       for (int j = 0; j < out.count; ++j)
         out.points[j] = hull.point(loop[std::size_t((j * corners) / out.count)]);
       out.normal = hull.face_normal(best_face);
@@ -624,8 +658,9 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
   // The parts' features are gathered once, classified, and summed only when no cap case: a sum
   // of more parts than there is room for here asks them again for the outline.
   constexpr int kStoredParts = 4;
-  SupportFeatureT<S> stored[kStoredParts], cap;
-  int part_count = 0, caps = 0, others = 0;
+  // Likewise one part's rim point and the others' points: that rim moved by them.
+  SupportFeatureT<S> stored[kStoredParts], cap, rim;
+  int part_count = 0, caps = 0, rims = 0, others = 0;
   Vec3T<S> offset = Vec3T<S>::Zero();
   for_each_part(n, tolerance, [&](const SupportFeatureT<S>& f) {
     if (f.disc_radius > S(0)) {
@@ -633,6 +668,10 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
       ++caps;
     } else if (f.count == 1) {
       offset += f.points[0];
+      if (f.rim_radius > S(0)) {
+        rim = f;
+        ++rims;
+      }
     } else {
       ++others;
     }
@@ -643,6 +682,11 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
     out = cap;
     for (int i = 0; i < out.count; ++i) out.points[i] += offset;
     out.disc_centre += offset;
+    return;
+  }
+  if (caps == 0 && rims == 1 && others == 0) {
+    out.set_rim_point(offset, rim.rim_centre + (offset - rim.points[0]), rim.rim_axis,
+                      rim.rim_radius);
     return;
   }
   Vec3T<S> first_near[kMaxNearPoints];
