@@ -93,7 +93,7 @@ bool flat_shadow(const SupportFeatureT<S>& f, const Mat3T<S>& rotation, const Ve
   out.anchor = out.corners[0];
   out.base = out.heights[0];
   out.slope = Planar(-normal.dot(e1) / along, -normal.dot(e2) / along);
-  if (f.disc_radius > S(0)) {
+  if (f.is_cap()) {
     const Vec3T<S> c = rotation * f.disc_centre + translation;
     out.disc = true;
     out.centre = Planar(e1.dot(c), e2.dot(c));

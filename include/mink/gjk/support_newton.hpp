@@ -505,7 +505,7 @@ bool in_feature(const SupportFeatureT<S>& f, const Mat3T<S>& rotation, const Vec
     return (to - nearest_weight<S>(V::Zero(), edge, to) * edge).norm() <= tolerance;
   }
   const V normal = rotation * f.normal;
-  if (f.disc_radius > S(0)) {
+  if (f.is_cap()) {
     // A cap: the target moved along u onto the cap's plane lies within the rim.
     const V centre = rotation * f.disc_centre + translation;
     const S along = normal.dot(u);
@@ -547,16 +547,17 @@ inline constexpr double kFaceSnapReach = 1e-5;
 /// the points 3.5e-8 of the size off the contact. Two edges, one on each core (a cone's side line
 /// across a box's edge), are tried the same way at their common normal, where h has kinks
 /// across both: EPA's normal stayed 1e-9 rad off it, and its points up to 1.3e-5 of the size
-/// off the crossing. Up to two support calls (counted in `iterations`) and two features;
-/// returns whether `best` moved.
+/// off the crossing. `feature_a` and `feature_b` are the cores' features along best.normal
+/// within kFaceSnapReach of the size (core_features()). Up to two support calls (counted in
+/// `iterations`); returns whether `best` moved.
 template <ConvexShape A, ConvexShape B>
-bool snap_to_face(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
+bool snap_to_face(const CoreDifference<A, B>& diff,
+                  const SupportFeatureT<typename A::Scalar>& feature_a,
+                  const SupportFeatureT<typename A::Scalar>& feature_b, int& iterations,
                   SupportMinimum<typename A::Scalar>& best) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
   const V u = best.normal;
-  SupportFeatureT<S> feature_a, feature_b;
-  core_features(diff, u, S(kFaceSnapReach) * size, feature_a, feature_b);
   V faces[2];
   int count = 0;
   if (feature_a.count >= 3) faces[count++] = unit_of(feature_a.normal);
@@ -588,6 +589,15 @@ bool snap_to_face(const CoreDifference<A, B>& diff, typename A::Scalar size, int
     }
   }
   return moved;
+}
+
+/// snap_to_face() with the features taken here.
+template <ConvexShape A, ConvexShape B>
+bool snap_to_face(const CoreDifference<A, B>& diff, typename A::Scalar size, int& iterations,
+                  SupportMinimum<typename A::Scalar>& best) {
+  SupportFeatureT<typename A::Scalar> feature_a, feature_b;
+  core_features(diff, best.normal, typename A::Scalar(kFaceSnapReach) * size, feature_a, feature_b);
+  return snap_to_face(diff, feature_a, feature_b, iterations, best);
 }
 
 /// feature_witness()'s pair where one core has a single point on its support plane along unit
@@ -841,7 +851,7 @@ bool newton_at_end(const CoreDifference<A, B>& diff,
   const auto cap_at = [&](const auto& core, const V& from, const V& to, DiscCore<S>& disc) {
     SupportFeatureT<S> cap;
     support_feature_of(core, V(unit_of(V(to - from))), near, cap);
-    if (!(cap.disc_radius > S(0))) return false;
+    if (!cap.is_cap()) return false;
     disc = {cap.disc_centre, unit_of(cap.normal), cap.disc_radius};
     const V offset = to - disc.centre;
     return std::abs(offset.norm() - disc.radius) <= near &&
@@ -923,8 +933,8 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
   };
   const auto take = [&](const SupportFeatureT<S>& disc, const SupportFeatureT<S>& edge,
                         CapAndEdge& f) {
-    const bool cap = disc.disc_radius > S(0);
-    f.rim_point = disc.count == 1 && disc.rim_radius > S(0);
+    const bool cap = disc.is_cap();
+    f.rim_point = disc.is_rim_point();
     if (!(cap || f.rim_point) || edge.count != 2) return false;
     f.centre = to_a(cap ? disc.disc_centre : disc.rim_centre, disc_on_a);
     const V axis = cap ? disc.normal : disc.rim_axis;
@@ -995,10 +1005,13 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
     s = (q - f.p0).dot(f.along);
     return true;
   };
-  // The normal edge x t at the rim's angle phi, towards best's side, and the features along it.
-  const auto features_at = [&](const CapAndEdge& f, S phi, V& u, CapAndEdge& next) {
-    const V radial = std::cos(phi) * f.e1 + std::sin(phi) * f.e2;
-    u = unit_of(V(f.along.cross(V(f.axis.cross(radial)))));
+  // The rim's tangent at its angle phi.
+  const auto tangent_at = [](const CapAndEdge& f, S phi) {
+    return V(f.axis.cross(V(std::cos(phi) * f.e1 + std::sin(phi) * f.e2)));
+  };
+  // The normal edge x t for the rim's tangent t, towards best's side, and the features along it.
+  const auto features_at = [&](const CapAndEdge& f, const V& t, V& u, CapAndEdge& next) {
+    u = unit_of(V(f.along.cross(t)));
     if (!is_finite(u)) return false;
     if (u.dot(best.normal) < S(0)) u = -u;
     SupportFeatureT<S> fa, fb;
@@ -1023,12 +1036,13 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
       nearly_settled = false;
       if (!solve(f, phi_out, q, t, s)) break;
       CapAndEdge next;
-      if (!features_at(f, phi_out, u, next)) break;
+      if (!features_at(f, t, u, next)) break;
       solved_on = f;
       const S reach = S(64) * eps *
                       std::max({f.centre.cwiseAbs().maxCoeff(), f.p0.cwiseAbs().maxCoeff(), size});
-      settled = (next.p0 - f.p0).norm() <= reach && (next.centre - f.centre).norm() <= reach &&
-                (next.axis - f.axis).norm() <= S(64) * eps &&
+      const bool same_rim =
+          (next.centre - f.centre).norm() <= reach && (next.axis - f.axis).norm() <= S(64) * eps;
+      settled = same_rim && (next.p0 - f.p0).norm() <= reach &&
                 (next.along - f.along).norm() <= S(64) * eps;
       // The root is known to G's rounding over its slope, small where the rim runs nearly along
       // the edge: a cap turned 3e-3 rad from a cone's side line gave roots 1e-12 rad apart from
@@ -1037,19 +1051,17 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
       // is tried too (the acceptance below still decides); lines that jump by 4e-9 from round
       // to round (a rim rising 4e-3 rad from a side line) left normals 3e-9 rad off.
       const V moved_line = (next.p0 + s * next.along) - (f.p0 + s * f.along);
-      nearly_settled = (next.centre - f.centre).norm() <= reach &&
-                       (next.axis - f.axis).norm() <= S(64) * eps &&
-                       moved_line.norm() <= S(64) * reach;
+      nearly_settled = same_rim && moved_line.norm() <= S(64) * reach;
       if (settled) break;
       const S g = phi_out - phi_in;
-      const S secant = phi_in - g * (phi_in - previous_in) / (g - previous_g);
+      const S secant = round > 0 ? phi_in - g * (phi_in - previous_in) / (g - previous_g) : phi_out;
       previous_in = phi_in;
       previous_g = g;
       phi_in = phi_out;
       f = next;
-      if (round > 0 && std::isfinite(secant) && secant != phi_out) {
+      if (std::isfinite(secant) && secant != phi_out) {
         V along_secant;
-        if (!features_at(next, secant, along_secant, f)) break;
+        if (!features_at(next, tangent_at(next, secant), along_secant, f)) break;
         phi_in = secant;
       }
     }
@@ -1098,8 +1110,8 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
   int kept = newton_steps(diff, size, max_steps, iterations, best);
   SupportFeatureT<S> feature_a, feature_b;
   core_features(diff, best.normal, S(kFaceSnapReach) * size, feature_a, feature_b);
-  const bool cap_a = feature_a.disc_radius > S(0) && feature_b.count < 3;
-  const bool cap_b = feature_b.disc_radius > S(0) && feature_a.count < 3;
+  const bool cap_a = feature_a.is_cap() && feature_b.count < 3;
+  const bool cap_b = feature_b.is_cap() && feature_a.count < 3;
   const bool stepped_to_witness = is_witness_pair(best, witness_gap);
   if (!stepped_to_witness) {
     // Short of the minimum beside one core's cap, its rim seen from near its axis
@@ -1138,8 +1150,8 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
   // answer is exact, where Newton's steps, at a witness pair too, leave the normal to the
   // square root of the rounding of h, flat to second order along the edge's kink (a cap turned
   // 2.6e-3 rad from a side line kept a normal 1.2e-9 rad off, the points 2.7e-8 of the size).
-  const bool rim_a = cap_a || (feature_a.count == 1 && feature_a.rim_radius > S(0));
-  const bool rim_b = cap_b || (feature_b.count == 1 && feature_b.rim_radius > S(0));
+  const bool rim_a = cap_a || feature_a.is_rim_point();
+  const bool rim_b = cap_b || feature_b.is_rim_point();
   if ((rim_a && feature_b.count == 2 &&
        rim_against_edge(diff, feature_a, feature_b, true, size, witness_gap, iterations, best)) ||
       (rim_b && feature_a.count == 2 &&
@@ -1153,7 +1165,9 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
   // their crossing lay beyond the capsule's end. The answer fell back to GJK's normal, 4e-9 rad
   // off, though Newton's steps had reached the minimum.
   const SupportMinimum<S> stepped = best;
-  if (snap_to_face(diff, size, iterations, best)) {
+  // best is still where the features were taken (newton_about_axis() and rim_against_edge()
+  // move it only when they succeed).
+  if (snap_to_face(diff, feature_a, feature_b, iterations, best)) {
     const bool placed = feature_witness(diff, size, iterations, best);
     if (is_witness_pair(best, witness_gap)) return kept + 1 + (placed ? 1 : 0);
     best = stepped;

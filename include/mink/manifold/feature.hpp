@@ -68,6 +68,11 @@ struct SupportFeatureT {
   Vec3T<S> rim_centre = Vec3T<S>::Zero();
   Vec3T<S> rim_axis = Vec3T<S>::UnitZ();
 
+  /// A cylinder's or cone's cap (disc_radius holds its rim).
+  bool is_cap() const { return disc_radius > S(0); }
+  /// A single point on a cylinder's or cone's rim (rim_radius holds the rim).
+  bool is_rim_point() const { return count == 1 && rim_radius > S(0); }
+
   void set_point(const Vec3T<S>& p) {
     count = 1;
     points[0] = p;
@@ -663,12 +668,12 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
   int part_count = 0, caps = 0, rims = 0, others = 0;
   Vec3T<S> offset = Vec3T<S>::Zero();
   for_each_part(n, tolerance, [&](const SupportFeatureT<S>& f) {
-    if (f.disc_radius > S(0)) {
+    if (f.is_cap()) {
       cap = f;
       ++caps;
     } else if (f.count == 1) {
       offset += f.points[0];
-      if (f.rim_radius > S(0)) {
+      if (f.is_rim_point()) {
         rim = f;
         ++rims;
       }
