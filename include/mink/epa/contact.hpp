@@ -419,14 +419,20 @@ ContactResultT<typename A::Scalar> contact_in_range(
     // Curved cores: EPA's normal of a smooth minimum is good to the square root of its tolerance
     // (1e-5 rad); Newton's steps (gjk/support_newton.hpp) take it, and the points (the support
     // points along it), to the rounding. Kept only as deep as EPA's upper end, to rounding. Cores
-    // that touch too (see separate_cores()).
+    // that touch too (see separate_cores()). Both values are rounded by their support points'
+    // coordinates, B's also by its offset from A, not by their difference w: on cores that
+    // touch, w is 1e-14 long, and a face's exact normal, its value 1e-15 above EPA's upper end,
+    // was refused for EPA's normal, 3e-8 rad off.
     if (tolerances.refine_curved_normals && !epa.degenerate) {
       auto least = detail::SupportMinimum<S>::at(diff, n, result.iterations);
-      const S rounding =
-          S(16) * std::numeric_limits<S>::epsilon() * least.vertex.w.cwiseAbs().maxCoeff();
+      const auto rounding = [&] {
+        return S(2) * std::max(detail::support_rounding(least.vertex),
+                               S(16) * std::numeric_limits<S>::epsilon() *
+                                   diff.translation.cwiseAbs().maxCoeff());
+      };
       if (detail::newton_on_support(diff, size, tolerances.relative_depth * size,
                                     detail::kNewtonMaxSteps, result.iterations, least) > 0 &&
-          least.value <= epa.upper + rounding) {
+          least.value <= epa.upper + rounding()) {
         n = least.normal;
         core_depth = std::max(S(0), least.value);
         on_a = least.vertex.a;

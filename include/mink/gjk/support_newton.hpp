@@ -513,6 +513,19 @@ bool in_feature(const SupportFeatureT<S>& f, const Mat3T<S>& rotation, const Vec
     const V on_plane = target + (normal.dot(V(centre - target)) / along) * u;
     return (on_plane - centre).norm() <= f.disc_radius + tolerance;
   }
+  if (f.is_stadium()) {
+    // A cap swept along a segment: likewise, within its radius of the segment. Its polygon
+    // cuts the round ends' chords: a point on them lay outside it, and an ellipsoid touching a
+    // cone's base swept by a segment kept EPA's points, 1e-6 of the size off.
+    const V from = rotation * f.stadium_ends[0] + translation;
+    const V to = rotation * f.stadium_ends[1] + translation;
+    const S along = normal.dot(u);
+    if (!(std::abs(along) > S(0.5))) return false;
+    const V on_plane = target + (normal.dot(V(from - target)) / along) * u;
+    const V segment = to - from, offset = on_plane - from;
+    const S t = segment.squaredNorm() > S(0) ? nearest_weight<S>(V::Zero(), segment, offset) : S(0);
+    return (offset - t * segment).norm() <= f.stadium_radius + tolerance;
+  }
   // The polygon runs counter-clockwise about its normal: the target is on the inner side of
   // every edge, seen along u.
   const S side = normal.dot(u) >= S(0) ? S(1) : S(-1);
@@ -600,29 +613,92 @@ bool snap_to_face(const CoreDifference<A, B>& diff, typename A::Scalar size, int
   return snap_to_face(diff, feature_a, feature_b, iterations, best);
 }
 
+/// How far the normal may turn (rad) when witness_beside_single_point() keeps a curved core's
+/// point just outside the other's feature.
+inline constexpr double kOutsideTurn = 1e-11;
+
+/// The radius of curvature (unit: length) of the core that has a single point on its support
+/// plane along unit `u` (A when `single_a`; `at` is that support pair), along the unit `away`
+/// across u: how far its support point moves along `away` for a turn of the direction towards
+/// it, measured by two turns, of 2^-20 and 2^-19 rad (two support calls, counted in
+/// `iterations`). 0 where the point does not move in proportion to the turn: a corner or an
+/// edge's end, which stays or jumps.
+template <ConvexShape A, ConvexShape B>
+typename A::Scalar curvature_radius_along(const CoreDifference<A, B>& diff, bool single_a,
+                                          const Vec3T<typename A::Scalar>& u,
+                                          const Vec3T<typename A::Scalar>& away,
+                                          const SimplexVertexT<typename A::Scalar>& at,
+                                          int& iterations) {
+  using S = typename A::Scalar;
+  using V = Vec3T<S>;
+  // B's support point is taken along -u: it moves towards `away` as -u turns towards it.
+  const S turn = std::ldexp(S(1), -20) * (single_a ? S(1) : S(-1));
+  SimplexVertexT<S> once, twice;
+  diff.support(unit_of(V(u + turn * away)), once);
+  diff.support(unit_of(V(u + S(2) * turn * away)), twice);
+  iterations += 2;
+  const V base = single_a ? at.a : at.b;
+  const S moved_once = away.dot(V((single_a ? once.a : once.b) - base));
+  const S moved_twice = away.dot(V((single_a ? twice.a : twice.b) - base));
+  if (!(moved_once > S(0)) || !(std::abs(moved_twice - S(2) * moved_once) <= S(0.25) * moved_once))
+    return S(0);
+  return moved_once / std::abs(turn);
+}
+
 /// feature_witness()'s pair where one core has a single point on its support plane along unit
 /// `u` (smooth or strictly convex there, or a corner) and the other does not (a face or an edge,
 /// whose support point is one of its corners, not the point of contact): `pair` (the support
 /// point along u, `value` its support value) keeps the single point, and the other core's point
 /// is placed from it by the value along u, onto that core's support plane, and kept only where
 /// it lies in that core's support feature there (in_feature()), a proof that it is a point of
-/// that core. Returns whether `pair` holds the witness pair.
+/// that core. `size`: the sum of the bounding radii. Returns whether `pair` holds the witness
+/// pair.
+///
+/// A curved single point just outside the feature (by less than its radius of curvature along
+/// the way out, curvature_radius_along(), times kOutsideTurn; two support calls, counted in
+/// `iterations`) is kept: were the contact truly beyond the outline, at its rim or edge, the
+/// normal would turn by that distance over the radius, at most kOutsideTurn, and the points
+/// move by at most that distance. Far from the origin the inputs' rounding alone puts such a
+/// point out: 1e-13 outside a swept cone's base at 1.7e3, where the points fell back to EPA's,
+/// 1e-6 of the size off. A corner, whose radius is 0, gets no such slack: beside a face's edge
+/// the normal may turn by any angle.
 template <ConvexShape A, ConvexShape B>
 bool witness_beside_single_point(const CoreDifference<A, B>& diff,
                                  const SupportFeatureT<typename A::Scalar>& feature_a,
                                  const SupportFeatureT<typename A::Scalar>& feature_b,
                                  const Vec3T<typename A::Scalar>& u, typename A::Scalar value,
+                                 typename A::Scalar size, int& iterations,
                                  SimplexVertexT<typename A::Scalar>& pair) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
   const S tolerance = S(4) * support_rounding(pair);
-  if (feature_a.count == 1)
+  const bool single_a = feature_a.count == 1;
+  if (single_a)
     pair.b = pair.a - value * u;
   else
     pair.a = pair.b + value * u;
-  return feature_a.count == 1
-             ? in_feature<S>(feature_b, diff.rotation, diff.translation, u, V(pair.b), tolerance)
-             : in_feature<S>(feature_a, Mat3T<S>::Identity(), V::Zero(), u, V(pair.a), tolerance);
+  const auto inside = [&](S within) {
+    return single_a
+               ? in_feature<S>(feature_b, diff.rotation, diff.translation, u, V(pair.b), within)
+               : in_feature<S>(feature_a, Mat3T<S>::Identity(), V::Zero(), u, V(pair.a), within);
+  };
+  if (inside(tolerance)) return true;
+  // No radius of curvature above 64 sizes (an ellipsoid's reaches its radii's ratio squared
+  // times its size) is counted: most points that miss, miss by more, and cost no support call.
+  const S most = S(64) * size;
+  if (!inside(tolerance + S(kOutsideTurn) * most)) return false;
+  // Towards the placed point from the middle of the feature it missed: the way out.
+  const SupportFeatureT<S>& missed = single_a ? feature_b : feature_a;
+  V middle = V::Zero();
+  for (int i = 0; i < missed.count; ++i) middle += missed.points[i];
+  middle /= S(missed.count);
+  if (single_a) middle = diff.rotation * middle + diff.translation;
+  const V out = part_across(V((single_a ? pair.b : pair.a) - middle), u);
+  const S out_length = out.norm();
+  if (!(out_length > S(0))) return false;
+  const S radius = curvature_radius_along(diff, single_a, u, V(out / out_length), pair, iterations);
+  const S slack = S(kOutsideTurn) * std::min(radius, most);
+  return slack > S(0) && inside(tolerance + slack);
 }
 
 /// feature_witness()'s pair where both cores show an edge on their support planes along unit
@@ -698,7 +774,8 @@ bool feature_witness(const CoreDifference<A, B>& diff, typename A::Scalar size, 
   const S value = u.dot(pair.w);
   if (!std::isfinite(value) || !is_finite(pair.w)) return false;
   if (single) {
-    if (!witness_beside_single_point(diff, feature_a, feature_b, u, value, pair)) return false;
+    if (!witness_beside_single_point(diff, feature_a, feature_b, u, value, size, iterations, pair))
+      return false;
   } else if (!(feature_a.count == 2 && feature_b.count == 2 &&
                witness_at_crossing(diff, feature_a, feature_b, u, value, pair))) {
     // Faces or edges nearly parallel: the deepest point of their overlap, when the depth

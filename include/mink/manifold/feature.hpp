@@ -67,17 +67,30 @@ struct SupportFeatureT {
   S rim_radius = S(0);
   Vec3T<S> rim_centre = Vec3T<S>::Zero();
   Vec3T<S> rim_axis = Vec3T<S>::UnitZ();
+  /// A cap swept along a segment (a cylinder's or cone's cap in a sum with a segment): the
+  /// polygon's points are samples of its outline, and the face itself is the stadium of the
+  /// points within stadium_radius of the segment stadium_ends[0]-stadium_ends[1], in the
+  /// face's plane. 0 for every other feature. (unit: length)
+  S stadium_radius = S(0);
+  Vec3T<S> stadium_ends[2] = {Vec3T<S>::Zero(), Vec3T<S>::Zero()};
 
   /// A cylinder's or cone's cap (disc_radius holds its rim).
   bool is_cap() const { return disc_radius > S(0); }
   /// A single point on a cylinder's or cone's rim (rim_radius holds the rim).
   bool is_rim_point() const { return count == 1 && rim_radius > S(0); }
+  /// A cap swept along a segment (stadium_radius holds its round ends).
+  bool is_stadium() const { return stadium_radius > S(0); }
 
+  /// Marks the feature as no cap, rim point or stadium: what its points show is all there is.
+  void clear_curves() {
+    disc_radius = S(0);
+    rim_radius = S(0);
+    stadium_radius = S(0);
+  }
   void set_point(const Vec3T<S>& p) {
     count = 1;
     points[0] = p;
-    disc_radius = S(0);
-    rim_radius = S(0);
+    clear_curves();
   }
   /// The point p on the rim of `radius` about `centre`, normal to the unit `axis`.
   void set_rim_point(const Vec3T<S>& p, const Vec3T<S>& centre, const Vec3T<S>& axis, S radius) {
@@ -90,8 +103,7 @@ struct SupportFeatureT {
     count = 2;
     points[0] = p;
     points[1] = q;
-    disc_radius = S(0);
-    rim_radius = S(0);
+    clear_curves();
   }
 };
 
@@ -177,8 +189,7 @@ void feature_from_points(const Vec3T<S>* points, int count, const Vec3T<S>& n,
   // More corners than a feature holds: an evenly spread subset (it stays convex).
   const int kept = std::min(n_hull, kMaxFeaturePoints);
   out.count = kept;
-  out.disc_radius = S(0);
-  out.rim_radius = S(0);
+  out.clear_curves();
   for (int j = 0; j < kept; ++j) out.points[j] = points[corners[(j * n_hull) / kept]];
   Vec3T<S> normal = Vec3T<S>::Zero();
   for (int j = 0; j < kept; ++j) {
@@ -194,8 +205,8 @@ void feature_from_points(const Vec3T<S>* points, int count, const Vec3T<S>& n,
 template <class S>
 void rim_feature(S radius, S z, S z_normal, SupportFeatureT<S>& out) {
   out.count = kMaxFeaturePoints;
+  out.clear_curves();
   out.disc_radius = radius;
-  out.rim_radius = S(0);
   out.disc_centre = {S(0), S(0), z};
   out.normal = Vec3T<S>(S(0), S(0), z_normal >= S(0) ? S(1) : S(-1));
   for (int i = 0; i < kMaxFeaturePoints; ++i) {
@@ -351,8 +362,7 @@ void support_feature(const BoxT<S>& box, const Vec3T<S>& d, S tolerance, Support
   out.count = detail::box_feature_points(box.half_extents, d, f, Mat3T<S>::Identity().eval(),
                                          Vec3T<S>::Zero().eval(), S(0), Vec3T<S>::Zero().eval(),
                                          out.points);
-  out.disc_radius = S(0);
-  out.rim_radius = S(0);
+  out.clear_curves();
   if (f.face_axis >= 0)
     out.normal = Vec3T<S>::Unit(f.face_axis) * detail::sign_nonneg(d[f.face_axis]);
 }
@@ -528,8 +538,7 @@ void support_feature(const ConvexHullShapeT<S>& hull, const Vec3T<S>& d, S toler
     if (near) {
       const int corners = int(loop.size());
       out.count = std::min(corners, kMaxFeaturePoints);
-      out.disc_radius = S(0);
-      out.rim_radius = S(0);
+      out.clear_curves();
       for (int j = 0; j < out.count; ++j)
         out.points[j] = hull.point(loop[std::size_t((j * corners) / out.count)]);
       out.normal = hull.face_normal(best_face);
@@ -664,7 +673,7 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
   // of more parts than there is room for here asks them again for the outline.
   constexpr int kStoredParts = 4;
   // Likewise one part's rim point and the others' points: that rim moved by them.
-  SupportFeatureT<S> stored[kStoredParts], cap, rim;
+  SupportFeatureT<S> stored[kStoredParts], cap, rim, edge;
   int part_count = 0, caps = 0, rims = 0, others = 0;
   Vec3T<S> offset = Vec3T<S>::Zero();
   for_each_part(n, tolerance, [&](const SupportFeatureT<S>& f) {
@@ -678,6 +687,7 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
         ++rims;
       }
     } else {
+      if (f.count == 2) edge = f;
       ++others;
     }
     if (part_count < kStoredParts) stored[part_count] = f;
@@ -714,6 +724,14 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
     return sum_feature_points<S>(parts, n, near);
   };
   point_set_feature(shape, n, tolerance, gather, out);
+  // A cap and an edge (and single points): a stadium, of which the polygon holds samples of
+  // the round ends. Only the cap makes a polygon here, so one means it is still in.
+  if (caps == 1 && others == 1 && edge.count == 2 && out.count >= 3) {
+    const Vec3T<S> centre = cap.disc_centre + offset;
+    out.stadium_radius = cap.disc_radius;
+    out.stadium_ends[0] = centre + edge.points[0];
+    out.stadium_ends[1] = centre + edge.points[1];
+  }
 }
 
 }  // namespace detail

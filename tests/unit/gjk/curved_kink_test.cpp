@@ -20,6 +20,7 @@
 // - A capsule's end beside a swept cylinder's side line: a kink that Newton's step crossed
 //   unseen (swept_side_scene()).
 // - A rim over a swept cone's base: the sum's face had lost its rim (swept_cap_scene()).
+// - An ellipsoid on the round end of a cap swept across its axis (stadium_scene()).
 // - A capsule's end, or a cylinder's rim, just short of where its axis or side line crosses a
 //   side line seen along the normal (side_end_scene(), side_rim_scene()).
 // - A rim against a cap tilted 1e-9 to 1e-7 rad from facing it, the cap's rim point the contact
@@ -261,6 +262,40 @@ KinkScene swept_cap_scene(std::uint64_t seed) {
   return s;
 }
 
+// A cone's base or a cylinder's cap swept across its axis by a segment: the sum's face is a
+// stadium, and e lies on one of its round ends at or just inside the outline, where the polygon
+// of the outline's samples cuts a chord off: an ellipsoid touching there kept EPA's points, 1e-6
+// of the size off (stop 62's curved probe, c11_2558). `touching`: gaps of 1e-13 of the size,
+// else 1e-6 to 1e-1.
+KinkScene stadium_scene(std::uint64_t seed, bool touching) {
+  oracle::Rng rng(seed);
+  KinkScene s;
+  const Solid solid = random_solid(rng);
+  const bool cone = rng.chance(0.5);
+  const double sweep = rng.uniform(0.05, 0.5);
+  const double psi = rng.uniform(0, 2 * std::numbers::pi);
+  const Vec3 across(std::cos(psi), std::sin(psi), 0);
+  s.solid = Shape::sum(*Shape::segment(Vec3(-sweep * across), Vec3(sweep * across)),
+                       cone ? *Shape::cone(solid.radius, solid.half_height)
+                            : *Shape::cylinder(solid.radius, solid.half_height))
+                .value();
+  const double end = rng.chance(0.5) ? 1 : -1;
+  const double theta = psi + (end > 0 ? 0 : std::numbers::pi) +
+                       rng.uniform(-std::numbers::pi / 2, std::numbers::pi / 2);
+  const double from_centre = solid.radius * (rng.chance(0.5) ? 1 : rng.uniform(0.99, 1));
+  const Vec3 e = end * sweep * across + from_centre * Vec3(std::cos(theta), std::sin(theta), 0) +
+                 Vec3(0, 0, -solid.half_height);
+  set_contact(solid, e, Vec3(0, 0, -1), s);
+  s.size += sweep;
+  s.gap = touching ? s.size * rng.uniform(-1e-13, 1e-13) : s.size * rng.log_uniform(1e-6, 1e-1);
+  place_ellipsoid(rng, s);
+  s.note = std::string(cone ? "cone" : "cylinder") + "'s cap swept across, " +
+           std::to_string(from_centre / solid.radius) +
+           " of its radius from the end's centre, gap/size = " + std::to_string(s.gap / s.size) +
+           ", " + oracle::seed_note(seed);
+  return s;
+}
+
 // A point e on a cone's side line or a cylinder's (random solid), its normal n there; returns
 // which solid.
 const char* place_on_side_line(oracle::Rng& rng, KinkScene& s) {
@@ -447,6 +482,21 @@ TEST(CurvedKink, CylindersRimBesideASideLine) {
 
 TEST(CurvedKink, RimOverASweptConesBase) {
   expect_exact_apart(swept_cap_scene, 68700, oracle::sweep_count(300, 100));
+}
+
+TEST(CurvedKink, EllipsoidBesideASweptCapsRoundEnd) {
+  expect_exact_apart([](std::uint64_t seed) { return stadium_scene(seed, false); }, 74100,
+                     oracle::sweep_count(300, 100));
+}
+
+TEST(CurvedKink, EllipsoidTouchingASweptCapsRoundEnd) {
+  const int count = oracle::sweep_count(300, 100);
+  for (int i = 0; i < count; ++i) {
+    const KinkScene s = stadium_scene(74500 + i, true);
+    expect_exact(s, mink::contact(s.solid, s.pose_solid, s.other, s.pose_other), false, true);
+    expect_exact(s, mink::contact(s.other, s.pose_other, s.solid, s.pose_solid), true, true);
+    if (::testing::Test::HasFailure()) break;
+  }
 }
 
 TEST(CurvedKink, RimBesideARimNearItsAxis) {
