@@ -552,6 +552,12 @@ void core_features(const CoreDifference<A, B>& diff, const Vec3T<typename A::Sca
 /// tolerance (1e-5 rad), tilts a face of the size's width by.
 inline constexpr double kFaceSnapReach = 1e-5;
 
+/// How far below the support plane (a fraction of the size) a cap or stadium may lie for
+/// newton_on_support() to try its rim when the steps end short of a witness pair: where h is
+/// flat along such a rim (to 1e-15 over 2e-4 rad), GJK's normal and the steps end up to 1e-3
+/// rad off, and the face lies that much below the plane.
+inline constexpr double kFaceFacingReach = 1e-3;
+
 /// Moves `best` to the normal of a face of either core near it (within kFaceSnapReach of the
 /// size of the support plane) when the support value there is no higher, to rounding. A face's
 /// normal is a kink of h in every direction, which neither Newton's steps nor the secant along
@@ -1004,19 +1010,26 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
     S radius, length;
     bool rim_point;  // the rim is known by one point on it (its cap does not face the normal)
     V point;         // that point
+    int end;         // a stadium's round end whose rim this is (0 or 1)
   };
   const auto to_a = [&](const V& p, bool on_a) {
     return on_a ? p : V(diff.rotation * p + diff.translation);
   };
-  const auto take = [&](const SupportFeatureT<S>& disc, const SupportFeatureT<S>& edge,
+  // A stadium's round ends are half rims, each tried as a whole rim: the answer's acceptance
+  // below (the full cores' support there) drops a point on the inner half.
+  const auto take = [&](const SupportFeatureT<S>& disc, const SupportFeatureT<S>& edge, int end,
                         CapAndEdge& f) {
-    const bool cap = disc.is_cap();
+    const bool cap = disc.is_cap(), stadium = disc.is_stadium();
     f.rim_point = disc.is_rim_point();
-    if (!(cap || f.rim_point) || edge.count != 2) return false;
-    f.centre = to_a(cap ? disc.disc_centre : disc.rim_centre, disc_on_a);
-    const V axis = cap ? disc.normal : disc.rim_axis;
+    f.end = end;
+    if (!(cap || stadium || f.rim_point) || edge.count != 2) return false;
+    f.centre = to_a(cap       ? disc.disc_centre
+                    : stadium ? disc.stadium_ends[end]
+                              : disc.rim_centre,
+                    disc_on_a);
+    const V axis = cap || stadium ? disc.normal : disc.rim_axis;
     f.axis = unit_of(disc_on_a ? axis : V(diff.rotation * axis));
-    f.radius = cap ? disc.disc_radius : disc.rim_radius;
+    f.radius = cap ? disc.disc_radius : stadium ? disc.stadium_radius : disc.rim_radius;
     f.point = to_a(disc.points[0], disc_on_a);
     f.p0 = to_a(edge.points[0], !disc_on_a);
     const V p1 = to_a(edge.points[1], !disc_on_a);
@@ -1026,17 +1039,24 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
     plane_basis(f.axis, f.e1, f.e2);
     return true;
   };
-  const auto features = [&](const SupportFeatureT<S>& fa, const SupportFeatureT<S>& fb,
+  const auto features = [&](const SupportFeatureT<S>& fa, const SupportFeatureT<S>& fb, int end,
                             CapAndEdge& f) {
-    return disc_on_a ? take(fa, fb, f) : take(fb, fa, f);
+    return disc_on_a ? take(fa, fb, end, f) : take(fb, fa, end, f);
   };
-  CapAndEdge first;
-  if (!features(feature_a, feature_b, first)) return false;
-  V starts[2];  // rim directions, in A's frame
+  const SupportFeatureT<S>& disc = disc_on_a ? feature_a : feature_b;
+  const int rims = disc.is_stadium() ? 2 : 1;
+  CapAndEdge firsts[2];
+  V starts[4];  // rim directions, in A's frame, on the rim firsts[start_rim[i]]
+  int start_rim[4];
   int start_count = 0;
-  if (first.rim_point) {
-    starts[start_count++] = first.point - first.centre;
-  } else {
+  for (int rim = 0; rim < rims; ++rim) {
+    CapAndEdge& first = firsts[rim];
+    if (!features(feature_a, feature_b, rim, first)) return false;
+    if (first.rim_point) {
+      start_rim[start_count] = rim;
+      starts[start_count++] = first.point - first.centre;
+      continue;
+    }
     // The edge's shadow on the cap's plane, about the centre: o + s k.
     const V from_centre = first.p0 - first.centre;
     const S ox = from_centre.dot(first.e1), oy = from_centre.dot(first.e2);
@@ -1052,9 +1072,11 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
       const S half_chord = std::sqrt((radius * radius - miss_sq) / kk);
       for (const S sign : {S(-1), S(1)}) {
         const S s = s_near + sign * half_chord;
+        start_rim[start_count] = rim;
         starts[start_count++] = (ox + s * kx) * first.e1 + (oy + s * ky) * first.e2;
       }
     } else {
+      start_rim[start_count] = rim;
       starts[start_count++] = nx * first.e1 + ny * first.e2;
     }
   }
@@ -1093,10 +1115,11 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
     if (u.dot(best.normal) < S(0)) u = -u;
     SupportFeatureT<S> fa, fb;
     core_features(diff, u, S(kFaceSnapReach) * size, fa, fb);
-    return features(fa, fb, next);
+    return features(fa, fb, f.end, next);
   };
   bool moved = false;
   for (int i = 0; i < start_count; ++i) {
+    const CapAndEdge& first = firsts[start_rim[i]];
     CapAndEdge f = first;
     S phi_in = std::atan2(starts[i].dot(first.e2), starts[i].dot(first.e1));
     // The rim's angle phi_in gives the edge (along the normal there), the edge the root phi_out:
@@ -1193,42 +1216,56 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
   if (!stepped_to_witness) {
     // Short of the minimum beside one core's cap, its rim seen from near its axis
     // (newton_about_axis(); the rim's point at the minimum faces the other core's point seen
-    // along the axis). Both faces nearly parallel are flat_pair_witness()'s; a polytope's face
-    // has no rim, and its corner jumps with the azimuth.
-    if (cap_a) {
-      if (newton_about_axis(diff, feature_a.normal, Vec3T<S>(best.vertex.b - feature_a.disc_centre),
-                            feature_a.disc_radius, witness_gap, iterations, best))
-        return kept + 1;
-    } else if (cap_b) {
+    // along the axis). A stadium's round end likewise (a cone's base swept by a segment, tilted
+    // 9e-8 rad from a disc's rim point: EPA's points stayed 7e-5 of the size off). Both faces
+    // nearly parallel are flat_pair_witness()'s; a polytope's face has no rim, and its corner
+    // jumps with the azimuth.
+    const auto about_disc = [&](const SupportFeatureT<S>& fa, const SupportFeatureT<S>& fb,
+                                SupportMinimum<S>& from) {
+      Vec3T<S> centre;
+      S radius;
+      if (fb.count < 3 && fa.disc_towards(from.vertex.b, centre, radius))
+        return newton_about_axis(diff, fa.normal, Vec3T<S>(from.vertex.b - centre), radius,
+                                 witness_gap, iterations, from);
+      if (fa.count >= 3) return false;
       // In B's frame, where the cap's axis and the rim's point are exact: turned into A's, the
       // normal's rounding across the axis (1e-16) turned the rim's point by 1e-16 / psi and kept
       // the slopes from rounding 1e-7 rad off the axis.
       const Mat3T<S> back = diff.rotation.transpose();
       const CoreDifference<B, A> reversed{diff.b, diff.a, back, -(back * diff.translation)};
-      SupportMinimum<S> mirrored = best;
-      mirrored.normal = -(back * best.normal);
-      mirrored.vertex.a = back * (best.vertex.b - diff.translation);
-      mirrored.vertex.b = back * (best.vertex.a - diff.translation);
+      SupportMinimum<S> mirrored = from;
+      mirrored.normal = -(back * from.normal);
+      mirrored.vertex.a = back * (from.vertex.b - diff.translation);
+      mirrored.vertex.b = back * (from.vertex.a - diff.translation);
       mirrored.vertex.w = mirrored.vertex.a - mirrored.vertex.b;
-      if (newton_about_axis(reversed, feature_b.normal,
-                            Vec3T<S>(mirrored.vertex.b - feature_b.disc_centre),
-                            feature_b.disc_radius, witness_gap, iterations, mirrored)) {
-        best.value = mirrored.value;
-        best.normal = unit_of(Vec3T<S>(-(diff.rotation * mirrored.normal)));
-        best.vertex.a = diff.rotation * mirrored.vertex.b + diff.translation;
-        best.vertex.b = diff.rotation * mirrored.vertex.a + diff.translation;
-        best.vertex.w = best.vertex.a - best.vertex.b;
-        best.vertex.dir = best.normal;
-        return kept + 1;
-      }
-    }
+      if (!fb.disc_towards(mirrored.vertex.b, centre, radius) ||
+          !newton_about_axis(reversed, fb.normal, Vec3T<S>(mirrored.vertex.b - centre), radius,
+                             witness_gap, iterations, mirrored))
+        return false;
+      from.value = mirrored.value;
+      from.normal = unit_of(Vec3T<S>(-(diff.rotation * mirrored.normal)));
+      from.vertex.a = diff.rotation * mirrored.vertex.b + diff.translation;
+      from.vertex.b = diff.rotation * mirrored.vertex.a + diff.translation;
+      from.vertex.w = from.vertex.a - from.vertex.b;
+      from.vertex.dir = from.normal;
+      return true;
+    };
+    if (about_disc(feature_a, feature_b, best)) return kept + 1;
+    // A cap or stadium that faces the normal to within more than kFaceSnapReach: a rim's point
+    // against a swept cone's round end tilted 7e-7 rad, where h is flat to 1e-15 over 2e-4 rad
+    // and GJK's normal and Newton's steps stayed that far off, with the stadium's straight side
+    // as its feature.
+    SupportFeatureT<S> wide_a, wide_b;
+    core_features(diff, best.normal, S(kFaceFacingReach) * size, wide_a, wide_b);
+    if ((wide_a.count >= 3 || wide_b.count >= 3) && about_disc(wide_a, wide_b, best))
+      return kept + 1;
   }
   // A cap's rim, or a point on it, against the other core's edge (rim_against_edge()): its
   // answer is exact, where Newton's steps, at a witness pair too, leave the normal to the
   // square root of the rounding of h, flat to second order along the edge's kink (a cap turned
   // 2.6e-3 rad from a side line kept a normal 1.2e-9 rad off, the points 2.7e-8 of the size).
-  const bool rim_a = cap_a || feature_a.is_rim_point();
-  const bool rim_b = cap_b || feature_b.is_rim_point();
+  const bool rim_a = cap_a || feature_a.is_rim_point() || feature_a.is_stadium();
+  const bool rim_b = cap_b || feature_b.is_rim_point() || feature_b.is_stadium();
   if ((rim_a && feature_b.count == 2 &&
        rim_against_edge(diff, feature_a, feature_b, true, size, witness_gap, iterations, best)) ||
       (rim_b && feature_a.count == 2 &&

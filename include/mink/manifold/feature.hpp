@@ -80,6 +80,22 @@ struct SupportFeatureT {
   bool is_rim_point() const { return count == 1 && rim_radius > S(0); }
   /// A cap swept along a segment (stadium_radius holds its round ends).
   bool is_stadium() const { return stadium_radius > S(0); }
+  /// The disc whose rim may hold a contact with a point seen over the face at `toward` (same
+  /// frame): a cap's own, or the round end of a stadium nearer `toward` taken as a whole disc.
+  /// False for every other feature.
+  bool disc_towards(const Vec3T<S>& toward, Vec3T<S>& centre, S& radius) const {
+    if (is_cap()) {
+      centre = disc_centre;
+      radius = disc_radius;
+      return true;
+    }
+    if (!is_stadium()) return false;
+    const bool second =
+        (toward - stadium_ends[1]).squaredNorm() < (toward - stadium_ends[0]).squaredNorm();
+    centre = stadium_ends[second ? 1 : 0];
+    radius = stadium_radius;
+    return true;
+  }
 
   /// Marks the feature as no cap, rim point or stadium: what its points show is all there is.
   void clear_curves() {
