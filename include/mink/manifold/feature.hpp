@@ -690,6 +690,8 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
   constexpr int kStoredParts = 4;
   // Likewise one part's rim point and the others' points: that rim moved by them.
   SupportFeatureT<S> stored[kStoredParts], cap, rim, edge;
+  // The rim part's own point, apart from `rim` (whose points GCC cannot see set before use).
+  Vec3T<S> rim_point = Vec3T<S>::Zero();
   int part_count = 0, caps = 0, rims = 0, others = 0;
   Vec3T<S> offset = Vec3T<S>::Zero();
   for_each_part(n, tolerance, [&](const SupportFeatureT<S>& f) {
@@ -700,6 +702,7 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
       offset += f.points[0];
       if (f.is_rim_point()) {
         rim = f;
+        rim_point = f.points[0];
         ++rims;
       }
     } else {
@@ -716,8 +719,7 @@ void sum_support_feature(const T& shape, const Vec3T<typename T::Scalar>& d,
     return;
   }
   if (caps == 0 && rims == 1 && others == 0) {
-    out.set_rim_point(offset, rim.rim_centre + (offset - rim.points[0]), rim.rim_axis,
-                      rim.rim_radius);
+    out.set_rim_point(offset, rim.rim_centre + (offset - rim_point), rim.rim_axis, rim.rim_radius);
     return;
   }
   Vec3T<S> first_near[kMaxNearPoints];
