@@ -1232,13 +1232,16 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
     // 9e-8 rad from a disc's rim point: EPA's points stayed 7e-5 of the size off). Both faces
     // nearly parallel are flat_pair_witness()'s; a polytope's face has no rim, and its corner
     // jumps with the azimuth.
+    bool disc_tried = false;  // about_disc() reached newton_about_axis()
     const auto about_disc = [&](const SupportFeatureT<S>& fa, const SupportFeatureT<S>& fb,
                                 SupportMinimum<S>& from) {
       Vec3T<S> centre;
       S radius;
-      if (fb.count < 3 && fa.disc_towards(from.vertex.b, centre, radius))
+      if (fb.count < 3 && fa.disc_towards(from.vertex.b, centre, radius)) {
+        disc_tried = true;
         return newton_about_axis(diff, fa.normal, Vec3T<S>(from.vertex.b - centre), radius,
                                  witness_gap, iterations, from);
+      }
       if (fa.count >= 3) return false;
       // In B's frame, where the cap's axis and the rim's point are exact: turned into A's, the
       // normal's rounding across the axis (1e-16) turned the rim's point by 1e-16 / psi and kept
@@ -1250,8 +1253,9 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
       mirrored.vertex.a = back * (from.vertex.b - diff.translation);
       mirrored.vertex.b = back * (from.vertex.a - diff.translation);
       mirrored.vertex.w = mirrored.vertex.a - mirrored.vertex.b;
-      if (!fb.disc_towards(mirrored.vertex.b, centre, radius) ||
-          !newton_about_axis(reversed, fb.normal, Vec3T<S>(mirrored.vertex.b - centre), radius,
+      if (!fb.disc_towards(mirrored.vertex.b, centre, radius)) return false;
+      disc_tried = true;
+      if (!newton_about_axis(reversed, fb.normal, Vec3T<S>(mirrored.vertex.b - centre), radius,
                              witness_gap, iterations, mirrored))
         return false;
       from.value = mirrored.value;
@@ -1267,10 +1271,13 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
     // against a swept cone's round end tilted 7e-7 rad, where h is flat to 1e-15 over 2e-4 rad
     // and GJK's normal and Newton's steps stayed that far off, with the stadium's straight side
     // as its feature.
+    // Only when the narrow features gave no disc to try: one that failed above fails again.
     SupportFeatureT<S> wide_a, wide_b;
-    core_features(diff, best.normal, S(kFaceFacingReach) * size, wide_a, wide_b);
-    if ((wide_a.count >= 3 || wide_b.count >= 3) && about_disc(wide_a, wide_b, best))
-      return kept + 1;
+    if (!disc_tried) {
+      core_features(diff, best.normal, S(kFaceFacingReach) * size, wide_a, wide_b);
+      if ((wide_a.count >= 3 || wide_b.count >= 3) && about_disc(wide_a, wide_b, best))
+        return kept + 1;
+    }
   }
   // A cap's rim, or a point on it, against the other core's edge (rim_against_edge()): its
   // answer is exact, where Newton's steps, at a witness pair too, leave the normal to the
