@@ -97,6 +97,11 @@ struct SupportFeatureT {
     return true;
   }
 
+  /// Sets every point slot to zero, used or not: a copy of the feature then reads no
+  /// uninitialised memory (GCC's -Wmaybe-uninitialized stopped on such copies).
+  void clear_points() {
+    for (Vec3T<S>& p : points) p.setZero();
+  }
   /// Marks the feature as no cap, rim point or stadium: what its points show is all there is.
   void clear_curves() {
     disc_radius = S(0);
@@ -775,6 +780,7 @@ inline void support_feature(const Shape& shape, const Vec3& d, double tolerance,
   auto for_each_core = [&](const Vec3& n, double within, auto&& add) {
     for (const Core& core : shape.cores()) {
       SupportFeatureT<double> f;
+      f.clear_points();  // add() copies the whole feature, its unused points too
       visit_core(core, [&](const auto& c) { support_feature_of(c, n, within, f); });
       add(f);
     }
@@ -789,6 +795,7 @@ void support_feature(const MinkowskiSum<A, B>& sum, const Vec3T<typename A::Scal
   using S = typename A::Scalar;
   auto both_parts = [&](const Vec3T<S>& n, S within, auto&& add) {
     SupportFeatureT<S> f;
+    f.clear_points();  // add() copies the whole feature, its unused points too
     support_feature_of(sum.a, n, within, f);
     add(f);
     support_feature_of(sum.b, n, within, f);

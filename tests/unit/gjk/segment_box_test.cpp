@@ -478,8 +478,9 @@ TEST(SegmentBox, ASegmentPassingOverAnEdgeAtAHairsTiltLeansItsNormal) {
       const Vec3 from_segment = swapped ? r.normal : Vec3(-r.normal);
       EXPECT_NEAR(segment_box_support(motion.apply(p), motion.apply(q), box, motion, from_segment),
                   -r.distance, 1e-15 * (size + motion.translation.norm()));
-      if (!(moved && side_plane))
+      if (!(moved && side_plane)) {
         EXPECT_LT((r.normal - expected).norm(), 1e-11) << r.normal.transpose();
+      }
     }
   }
 }
