@@ -1272,8 +1272,8 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
     // and GJK's normal and Newton's steps stayed that far off, with the stadium's straight side
     // as its feature.
     // Only when the narrow features gave no disc to try: one that failed above fails again.
-    SupportFeatureT<S> wide_a, wide_b;
     if (!disc_tried) {
+      SupportFeatureT<S> wide_a, wide_b;
       core_features(diff, best.normal, S(kFaceFacingReach) * size, wide_a, wide_b);
       if ((wide_a.count >= 3 || wide_b.count >= 3) && about_disc(wide_a, wide_b, best))
         return kept + 1;

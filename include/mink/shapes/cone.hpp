@@ -32,17 +32,8 @@ struct ConeT {
   S core_radius() const { return S(0); }
   S bounding_radius() const { return std::hypot(radius, half_height); }
   const char* error() const {
-    // One branch for both (& on ints does not short-circuit); the message out of line.
-    if (int(detail::is_length(radius)) & int(detail::is_length(half_height))) [[likely]]
-      return nullptr;
-    return error_message();
-  }
-
- private:
-  [[gnu::noinline, gnu::cold]] const char* error_message() const {
-    if (!detail::is_length(radius)) return "cone radius must be finite and >= 0";
-    if (!detail::is_length(half_height)) return "cone half_height must be finite and >= 0";
-    return nullptr;
+    return detail::radius_height_error(radius, half_height, "cone radius must be finite and >= 0",
+                                       "cone half_height must be finite and >= 0");
   }
 };
 

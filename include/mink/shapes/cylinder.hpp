@@ -26,17 +26,9 @@ struct CylinderT {
   S core_radius() const { return S(0); }
   S bounding_radius() const { return std::hypot(radius, half_height); }
   const char* error() const {
-    // One branch for both (& on ints does not short-circuit); the message out of line.
-    if (int(detail::is_length(radius)) & int(detail::is_length(half_height))) [[likely]]
-      return nullptr;
-    return error_message();
-  }
-
- private:
-  [[gnu::noinline, gnu::cold]] const char* error_message() const {
-    if (!detail::is_length(radius)) return "cylinder radius must be finite and >= 0";
-    if (!detail::is_length(half_height)) return "cylinder half_height must be finite and >= 0";
-    return nullptr;
+    return detail::radius_height_error(radius, half_height,
+                                       "cylinder radius must be finite and >= 0",
+                                       "cylinder half_height must be finite and >= 0");
   }
 };
 

@@ -87,4 +87,23 @@ template <class S>
   return std::isgreaterequal(x, S(0)) && std::islessequal(x, std::numeric_limits<S>::max());
 }
 
+/// Out of line and cold: which of two messages applies is only asked of an invalid shape.
+[[gnu::noinline, gnu::cold]] inline const char* first_failed(bool first_ok, const char* first,
+                                                             const char* second) {
+  return first_ok ? second : first;
+}
+
+/// error() of a shape given by a radius and a half-height (capsule, cylinder, cone): nullptr when
+/// both are lengths, else the message of the first that is not. One branch (& on ints does not
+/// short-circuit) and the choice of message out of line: inlined, Clang chose between the messages
+/// with a chain of conditional moves on every query (a capsule pair's distance 41 -> 36 ns).
+template <class S>
+[[gnu::always_inline]] inline const char* radius_height_error(S radius, S half_height,
+                                                              const char* radius_message,
+                                                              const char* height_message) {
+  if (int(is_length(radius)) & int(is_length(half_height))) [[likely]]
+    return nullptr;
+  return first_failed(is_length(radius), radius_message, height_message);
+}
+
 }  // namespace mink::detail
