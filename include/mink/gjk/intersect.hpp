@@ -45,19 +45,15 @@ using IntersectResult = IntersectResultT<double>;
 
 namespace detail {
 
-/// The answer of a closed form: the cores' closest points are `gap` apart, and within `reach`
-/// (the radii plus the touching tolerance) the shapes intersect.
+/// The answer of a closed form's GapVerdict (not Unsure): within reach, the shapes intersect.
 template <class S>
-[[gnu::always_inline]] inline void intersect_from_core_gap(const Vec3T<S>& gap, S reach,
-                                                           IntersectResultT<S>& result) {
-  // One coordinate at a time: the gap often comes through memory, stored a coordinate at a time,
-  // and a packed load of two stalls on store forwarding (6 ns of a sphere-polytope test).
-  const S gap_sq = gap.x() * gap.x() + gap.y() * gap.y() + gap.z() * gap.z();
-  if (!(gap_sq <= std::numeric_limits<S>::max())) {
+[[gnu::always_inline]] inline void intersect_from_verdict(GapVerdict verdict,
+                                                          IntersectResultT<S>& result) {
+  if (verdict == GapVerdict::Overflow) {
     result.error = kOverflowError;
     return;
   }
-  result.intersect = length_at_most(gap, gap_sq, reach);
+  result.intersect = verdict == GapVerdict::Within;
   result.status = result.intersect ? Status::Intersecting : Status::Separated;
 }
 
@@ -81,21 +77,22 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
     Vec3T<S> on_a, on_b;
     S u, v;
     detail::closest_core_points_shifted(a, pose_a, b, pose_b, p, q, on_a, on_b, u, v);
-    detail::intersect_from_core_gap(Vec3T<S>(on_b - on_a), reach, result);
+    detail::intersect_from_verdict(detail::gap_verdict(Vec3T<S>(on_b - on_a), reach), result);
     return result;
   }
   if constexpr (detail::kPointSolid<A, B>) {
     // A sphere or point against a box, cylinder, cone, ellipsoid or small polytope: closed form, no
     // iteration.
-    if (const auto gap = detail::point_solid_gap(a, pose_a, b, pose_b, reach)) {
-      detail::intersect_from_core_gap(*gap, reach, result);
+    const auto verdict = detail::point_solid_verdict(a, pose_a, b, pose_b, reach);
+    if (verdict != detail::GapVerdict::Unsure) {
+      detail::intersect_from_verdict(verdict, result);
       return result;
     }
   }
   if constexpr (detail::kSegmentBox<A, B>) {
     // A capsule or segment against a box: closed form (query/segment_box.hpp).
     if (const auto local = detail::segment_box_pair_local(a, pose_a, b, pose_b)) {
-      detail::intersect_from_core_gap(local->gap, reach, result);
+      detail::intersect_from_verdict(detail::gap_verdict(local->gap, reach), result);
       return result;
     }
   }

@@ -73,21 +73,37 @@ struct PointSolidLocal {
   }
 };
 
+/// Whether two cores are within a reach of each other (intersect()'s closed forms): Overflow when
+/// the square of their gap does, Unsure when a closed form cannot tell (GJK decides then).
+enum class GapVerdict : unsigned char { Within, Beyond, Overflow, Unsure };
+
+/// The verdict on `gap` (one core's point minus the other's nearest point) against `reach` (the
+/// radii plus the touching tolerance). One coordinate at a time: a gap that comes through
+/// memory is stored a coordinate at a time, and a packed load of two stalls on store forwarding.
+template <class S>
+[[gnu::always_inline]] inline GapVerdict gap_verdict(const Vec3T<S>& gap, S reach) {
+  const S gap_sq = gap.x() * gap.x() + gap.y() * gap.y() + gap.z() * gap.z();
+  if (!(gap_sq <= std::numeric_limits<S>::max())) return GapVerdict::Overflow;
+  return length_at_most(gap, gap_sq, reach) ? GapVerdict::Within : GapVerdict::Beyond;
+}
+
 /// Solid cores with a closed-form nearest point: SolidCore<T>::core(t) points to the solid (a Box,
 /// a Cylinder, a polytope's FacePlanes; null: no closed form for this shape yet),
-/// SolidCore<T>::local(core, p) is the answer above, and SolidCore<T>::gap(core, p, reach) is p
-/// minus the solid's point nearest to p (0 inside), or a vector longer than `reach` when p is
-/// farther than that. Either may be nothing: GJK and EPA answer then.
+/// SolidCore<T>::local(core, p) is the answer above, and SolidCore<T>::within_reach(core, p,
+/// reach) the GapVerdict on p against the solid: whether p is within `reach` of it, the yes/no
+/// test's whole answer. It returns a byte, not the gap: a vector returned through memory stalled
+/// the caller's packed reads of it on store forwarding (a fifth of a sphere-polytope test under
+/// Clang). local() may be nothing and within_reach() Unsure: GJK and EPA answer then.
 template <class T>
 struct SolidCore : std::false_type {};
 
-/// gap() for a solid whose nearest point to p is a clamp (Solid::clamp(core, p)): exact, whatever
-/// the reach.
+/// within_reach() for a solid whose nearest point to p is a clamp (Solid::clamp(core, p)): exact,
+/// whatever the reach.
 template <class Solid>
 struct GapOfClamp {
   template <class Core, class S>
-  static std::optional<Vec3T<S>> gap(const Core& c, const Vec3T<S>& p, S) {
-    return p - Solid::clamp(c, p);
+  static GapVerdict within_reach(const Core& c, const Vec3T<S>& p, S reach) {
+    return gap_verdict(Vec3T<S>(p - Solid::clamp(c, p)), reach);
   }
 };
 
@@ -439,14 +455,14 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
   /// (|d|^2 - (h - d . v)) / |d| from it: beyond reach, d itself (longer than reach) will do; it
   /// is exact when v is the nearest point, which is where p lies in v's normal cone. Nothing: an
   /// edge or a face may be within reach.
-  static std::optional<Vec3T<S>> gap_by_corner(const Core& c, const Vec3T<S>& p, S reach) {
+  static GapVerdict verdict_by_corner(const Core& c, const Vec3T<S>& p, S reach) {
     alignas(32) std::array<S, Core::kMaxCorners> values;
     const NearestCorner v = nearest_corner(c, p, values.data());
     const Vec3T<S> d = p - v.corner;
-    if (v.distance_sq <= reach * reach) return d;
+    if (v.distance_sq <= reach * reach) return gap_verdict(d, reach);
     const S beyond = support_beyond_corner(c, d, v.index, values.data());
-    if (v.distance_sq - beyond > reach * std::sqrt(v.distance_sq)) return d;
-    return std::nullopt;
+    if (v.distance_sq - beyond > reach * std::sqrt(v.distance_sq)) return gap_verdict(d, reach);
+    return GapVerdict::Unsure;
   }
 
   /// The first face whose distance is `largest`.
@@ -565,24 +581,27 @@ struct SolidCore<PolytopeT<S>> : std::true_type {
     return {p - above[f] * c.normal(f), above[f] * above[f], int(f), Vec3T<S>::Zero()};
   }
 
-  static std::optional<Vec3T<S>> gap(const Core& c, const Vec3T<S>& p, S reach) {
+  static GapVerdict within_reach(const Core& c, const Vec3T<S>& p, S reach) {
     // The distances are kept only for the edge search, which few points need; the stores cost
     // more than their time (one run in three was 50 % slower, from where the stack fell).
     const std::optional<S> scanned = plane_distances(c, p, nullptr, reach);
-    if (!scanned) return std::nullopt;
+    if (!scanned) return GapVerdict::Unsure;
     const S largest = *scanned;
-    if (largest <= S(0)) return Vec3T<S>::Zero();
-    // Farther from a plane than reach: as far from the polytope. Any vector that long will do.
-    if (largest > reach) return Vec3T<S>(largest, S(0), S(0));
-    if (const auto by_corner = gap_by_corner(c, p, reach)) return by_corner;
+    if (largest <= S(0)) return GapVerdict::Within;
+    // Farther from a plane than reach: as far from the polytope.
+    if (largest > reach) return GapVerdict::Beyond;
+    if (const GapVerdict by_corner = verdict_by_corner(c, p, reach);
+        by_corner != GapVerdict::Unsure)
+      return by_corner;
     alignas(32) std::array<S, Core::kMaxFaces> above;
     plane_distances(c, p, above.data());
     if (c.face_count > kNearestMaxFaces) {
       const Nearest nearest = nearest_by_largest_face(c, p, above.data(), largest);
-      if (!(nearest.distance_sq < std::numeric_limits<S>::infinity())) return std::nullopt;
-      return Vec3T<S>(p - nearest.point);
+      if (!(nearest.distance_sq < std::numeric_limits<S>::infinity())) return GapVerdict::Unsure;
+      return gap_verdict(Vec3T<S>(p - nearest.point), reach);
     }
-    return Vec3T<S>(p - nearest_outside<false>(c, p, above.data(), reach * reach).point);
+    return gap_verdict(
+        Vec3T<S>(p - nearest_outside<false>(c, p, above.data(), reach * reach).point), reach);
   }
 
   static std::optional<PointSolidLocal<S>> local(const Core& c, const Vec3T<S>& p) {
@@ -668,11 +687,11 @@ struct SolidCore<EllipsoidT<S>> : std::true_type {
   static bool inside(const Core& e, const Vec3T<S>& p) {
     return p.cwiseQuotient(e.radii).squaredNorm() <= S(1);
   }
-  static std::optional<Vec3T<S>> gap(const Core& e, const Vec3T<S>& p, S) {
-    if (inside(e, p)) return Vec3T<S>::Zero();
+  static GapVerdict within_reach(const Core& e, const Vec3T<S>& p, S reach) {
+    if (inside(e, p)) return GapVerdict::Within;
     const auto l = local(e, p, false);
-    if (!l) return std::nullopt;
-    return Vec3T<S>(p - l->on_solid);
+    if (!l) return GapVerdict::Unsure;
+    return gap_verdict(Vec3T<S>(p - l->on_solid), reach);
   }
   static std::optional<PointSolidLocal<S>> local(const Core& e, const Vec3T<S>& p) {
     return local(e, p, inside(e, p));
@@ -774,8 +793,8 @@ requires(SolidCore<T>::value) struct SolidCore<Rounded<T>> : std::true_type {
   using S = typename T::Scalar;
   using Core = typename SolidCore<T>::Core;
   static const Core* core(const Rounded<T>& r) { return SolidCore<T>::core(r.shape); }
-  static std::optional<Vec3T<S>> gap(const Core& c, const Vec3T<S>& p, S reach) {
-    return SolidCore<T>::gap(c, p, reach);
+  static GapVerdict within_reach(const Core& c, const Vec3T<S>& p, S reach) {
+    return SolidCore<T>::within_reach(c, p, reach);
   }
   static std::optional<PointSolidLocal<S>> local(const Core& c, const Vec3T<S>& p) {
     return SolidCore<T>::local(c, p);
@@ -802,7 +821,7 @@ struct CorePair {
 /// The point core of a point-core shape in the frame of a solid-core shape (either order).
 /// Always inlined: out of line, GCC returned the point through memory, stored a coordinate at a
 /// time, for callers that load it two at a time, which stalls on store forwarding (with the range
-/// check's and intersect_from_core_gap()'s packed reads, a third of a sphere-polytope test).
+/// check's and gap_verdict()'s packed reads, a third of a sphere-polytope test).
 template <class A, class B>
 [[gnu::always_inline]] inline Vec3T<typename A::Scalar> point_in_solid_frame(
     const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
@@ -826,18 +845,14 @@ const auto* solid_of(const A& a, const B& b) {
     return SolidCore<B>::core(b);
 }
 
-/// The point core minus its clamp into the solid core, in the solid's frame (0 when the point is
-/// inside), for the yes/no test: no points. Longer than `reach` when the point is farther than
-/// that (then not necessarily the whole gap). Nothing: GJK decides.
+/// Whether the point core is within `reach` of the solid core, for the yes/no test (Unsure: GJK
+/// decides).
 template <class A, class B>
-std::optional<Vec3T<typename A::Scalar>> point_solid_gap(const A& a,
-                                                         const PoseT<typename A::Scalar>& pose_a,
-                                                         const B& b,
-                                                         const PoseT<typename A::Scalar>& pose_b,
-                                                         typename A::Scalar reach) {
+GapVerdict point_solid_verdict(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+                               const PoseT<typename A::Scalar>& pose_b, typename A::Scalar reach) {
   const auto* solid = solid_of(a, b);
-  if (!solid) return std::nullopt;
-  return SolidOf<A, B>::gap(*solid, point_in_solid_frame(a, pose_a, b, pose_b), reach);
+  if (!solid) return GapVerdict::Unsure;
+  return SolidOf<A, B>::within_reach(*solid, point_in_solid_frame(a, pose_a, b, pose_b), reach);
 }
 
 /// The point core against the solid core in the solid's frame (PointSolidLocal). Nothing: GJK and
