@@ -73,10 +73,15 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
   const S reach = radius + tolerances.relative * size;  // core distances that count as touching
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form, no iteration.
-    detail::CoreSegment<S> p, q;
+    // Shifted to A's origin, like GJK, so far-away pairs keep their precision.
+    const auto p = detail::SegmentCore<A>::world(a, pose_a, pose_a.translation);
+    const auto q = detail::SegmentCore<B>::world(b, pose_b, pose_a.translation);
+    if (detail::line_of_centres_separates(p, q, reach)) {
+      result.status = Status::Separated;
+      return result;
+    }
     Vec3T<S> on_a, on_b;
-    S u, v;
-    detail::closest_core_points_shifted(a, pose_a, b, pose_b, p, q, on_a, on_b, u, v);
+    detail::closest_points_of_segments(p, q, on_a, on_b);
     detail::intersect_from_verdict(detail::gap_verdict(Vec3T<S>(on_b - on_a), reach), result);
     return result;
   }

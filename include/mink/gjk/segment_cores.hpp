@@ -237,22 +237,25 @@ void closest_points_of_segments(const Vec3T<S>& p0, const Vec3T<S>& p1, const Ve
                              closest_q);
 }
 
-/// The cores of a (at pose_a) and b (at pose_b), both points or segments, in the world frame
-/// shifted to A's origin (which keeps far-away pairs precise), as p and q, and their closest
-/// points on_a = p.centre + u p.half and on_b = q.centre + v q.half. Always inlined: intersect()
-/// needs no more than this, and out of line the points would come back through memory.
-template <class A, class B>
-[[gnu::always_inline]] inline void closest_core_points_shifted(
-    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
-    const PoseT<typename A::Scalar>& pose_b, CoreSegment<typename A::Scalar>& p,
-    CoreSegment<typename A::Scalar>& q, Vec3T<typename A::Scalar>& on_a,
-    Vec3T<typename A::Scalar>& on_b, typename A::Scalar& u, typename A::Scalar& v) {
-  p = SegmentCore<A>::world(a, pose_a, pose_a.translation);
-  q = SegmentCore<B>::world(b, pose_b, pose_a.translation);
-  closest_points_of_segments(p, q, on_a, on_b, &u, &v);
+/// Whether the line of centres w = q.centre - p.centre separates cores p and q by more than
+/// `reach` (>= 0): along w / |w| the cores reach |p.half . w| / |w| and |q.half . w| / |w| from
+/// their centres, so the gap along it is (w.w - |p.half . w| - |q.half . w|) / |w|, a lower bound
+/// on the distance. Compared squared, with no root or division: most separated pairs are apart
+/// along this line, which costs two dot products where the closest points take a chain of
+/// divisions and clamps. False (the closest points decide) when reach^2 w.w underflows.
+template <class S>
+[[gnu::always_inline]] inline bool line_of_centres_separates(const CoreSegment<S>& p,
+                                                             const CoreSegment<S>& q, S reach) {
+  const Vec3T<S> w = q.centre - p.centre;
+  const S ww = w.squaredNorm();
+  const S apart = ww - std::abs(p.half.dot(w)) - std::abs(q.half.dot(w));
+  const S bound = reach * reach * ww;
+  return apart > S(0) && bound >= std::numeric_limits<S>::min() && apart * apart > bound;
 }
 
-/// closest_core_points_shifted() and their distance: returns |on_b - on_a|; `unit` (optional)
+/// The closest points of the cores of a (at pose_a) and b (at pose_b), both points or segments,
+/// in the world frame shifted to A's origin (which keeps far-away pairs precise), and their
+/// distance: returns |on_b - on_a|; `unit` (optional)
 /// receives the direction from on_a to on_b when they differ (else it is left as it was): the
 /// plain quotient while the gap is more than 1e-3 of the segments' size and distance from A's
 /// origin (its rounding then tilts it by less than 3e-13 rad), segment_gap_direction()'s when the
@@ -264,9 +267,10 @@ typename A::Scalar closest_core_points(const A& a, const PoseT<typename A::Scala
                                        Vec3T<typename A::Scalar>& on_b,
                                        Vec3T<typename A::Scalar>* unit = nullptr) {
   using S = typename A::Scalar;
-  CoreSegment<S> p, q;
+  const CoreSegment<S> p = SegmentCore<A>::world(a, pose_a, pose_a.translation);
+  const CoreSegment<S> q = SegmentCore<B>::world(b, pose_b, pose_a.translation);
   S u = S(0), v = S(0);
-  closest_core_points_shifted(a, pose_a, b, pose_b, p, q, on_a, on_b, u, v);
+  closest_points_of_segments(p, q, on_a, on_b, &u, &v);
   const Vec3T<S> gap = on_b - on_a;
   const S gap_sq = gap.squaredNorm();
   // length_of() and unit_of() with one range test on the hot path: a square in the normal range

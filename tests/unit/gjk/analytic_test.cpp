@@ -200,4 +200,57 @@ TEST(GjkDistance, SphereCylinderMatchesAnalytic) {
   }
 }
 
+// Pairs whose closest points lie on the line of centres, where intersect()'s first test (the line
+// of centres as a separating axis) decides: capsules side by side, end to end and crossing, and a
+// sphere beside a capsule, with their surfaces a quarter of the touching tolerance apart (they
+// count as intersecting) or four times it (separated). The gap is built into the placement, so
+// the answer is known exactly; the poses stay within the size of the shapes, where rounding
+// (1e-15 of the size) is far below the tolerance (1e-12 of it).
+TEST(GjkIntersect, LineOfCentresAtTouching) {
+  const std::uint64_t base = 9000;
+  const int n = oracle::sweep_count(2000);
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = base + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const mink::Capsule a{rng.log_uniform(0.01, 1), rng.log_uniform(0.001, 3)};
+    const mink::Capsule b{rng.log_uniform(0.01, 1), rng.log_uniform(0.001, 3)};
+    const int kind = i % 4;
+    // The sum of the bounding radii, which scales the touching tolerance (B's is its radius when
+    // it is a sphere).
+    const double size = a.radius + a.half_height + b.radius + (kind == 3 ? 0 : b.half_height);
+    const double touch = mink::Tolerances{}.relative * size;
+    const Pose pa = Pose::from(rng.in_ball(size), rng.rotation());
+    const Vec3 axis = pa.rotation.col(2);
+    const Vec3 across = axis.cross(rng.unit()).normalized();  // orthogonal to A's axis
+    const bool apart = (i / 4) % 2 == 1;
+    const double gap = apart ? 4 * touch : 0.25 * touch;
+    const double radii = a.radius + b.radius;
+    mink::Pose pb;
+    if (kind == 0) {  // side by side, parallel (either way round)
+      const mink::Quat qb = rng.uniform(0, 1) < 0.5
+                                ? mink::Quat(pa.rotation)
+                                : mink::Quat(pa.rotation) * mink::Quat(0, 1, 0, 0);
+      pb = Pose::from(pa.translation + (radii + gap) * across, qb);
+    } else if (kind == 1) {  // end to end, on one line
+      pb = Pose::from(pa.translation + (a.half_height + b.half_height + radii + gap) * axis,
+                      mink::Quat(pa.rotation));
+    } else if (kind == 2) {  // crossing: B's axis orthogonal to A's and to the line of centres
+      const Vec3 b_axis = axis.cross(across);
+      const mink::Quat qb = mink::Quat::FromTwoVectors(Vec3::UnitZ(), b_axis);
+      pb = Pose::from(pa.translation + (radii + gap) * across, qb);
+    } else {  // B is a sphere beside A's side
+      const mink::Sphere sphere{b.radius};
+      const Pose ps = Pose::from(pa.translation + (radii + gap) * across, rng.rotation());
+      EXPECT_EQ(mink::intersect(a, pa, sphere, ps).intersect, !apart);
+      EXPECT_EQ(mink::intersect(sphere, ps, a, pa).intersect, !apart);
+      EXPECT_EQ(mink::distance(a, pa, sphere, ps).intersect, !apart);
+      continue;
+    }
+    EXPECT_EQ(mink::intersect(a, pa, b, pb).intersect, !apart) << "kind " << kind;
+    EXPECT_EQ(mink::intersect(b, pb, a, pa).intersect, !apart) << "kind " << kind;
+    EXPECT_EQ(mink::distance(a, pa, b, pb).intersect, !apart) << "kind " << kind;
+  }
+}
+
 }  // namespace
