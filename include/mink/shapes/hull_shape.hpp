@@ -284,13 +284,20 @@ class ConvexHullShapeT {
 
   /// The start the direction table gives for d: the answer for the centre of d's cell (0 for a
   /// zero or non-finite direction, and for shapes that scan).
-  std::uint32_t seed_index(const Vec3T<S>& d) const {
+  std::uint32_t seed_index(const Vec3T<S>& d) const { return seed_index(d.x(), d.y(), d.z()); }
+  /// The same for d = (dx, dy, dz). By coordinates, in registers: from an array of |d|, Clang read
+  /// x and y with one packed load of the caller's direction, which it had stored a coordinate at
+  /// a time, and the load waited for the stores (store forwarding fails from narrower stores).
+  std::uint32_t seed_index(S dx, S dy, S dz) const {
     if (seeds_.empty()) return 0;
-    const S abs_d[3] = {std::abs(d.x()), std::abs(d.y()), std::abs(d.z())};
+    const S d[3] = {dx, dy, dz};
+    const S abs_d[3] = {std::abs(dx), std::abs(dy), std::abs(dz)};
     int axis = 0;
     if (abs_d[1] > abs_d[axis]) axis = 1;
     if (abs_d[2] > abs_d[axis]) axis = 2;
-    const S a = abs_d[axis];
+    // abs_d[axis] (NaN where that is), in registers: the division below need not wait for the
+    // axis and a load.
+    const S a = std::max(std::max(abs_d[0], abs_d[1]), abs_d[2]);
     if (!(a > S(0)) || !(a <= std::numeric_limits<S>::max())) return 0;
     // A coordinate u across the axis, in [-a, a], lies (u + a) k / (2 a) cells from the face's
     // edge: one division for both coordinates, and no conversion of k (2 ns of a support call).
@@ -359,7 +366,9 @@ class ConvexHullShapeT {
   /// The cell f cells from a face's edge, f in [0, k] (NaN: cell 0).
   std::size_t cell(S f) const {
     if (!(f > S(0))) return 0;
-    return f >= S(2) * seed_half_cells_ ? seed_cells_ - 1 : std::size_t(f);
+    // Through int: f < k <= 64 here, and a conversion to an unsigned 64-bit integer takes a
+    // second conversion and a select.
+    return f >= S(2) * seed_half_cells_ ? seed_cells_ - 1 : std::size_t(int(f));
   }
 
   /// The direction table: the cube of directions, each face cut into k x k cells (k about
