@@ -296,7 +296,7 @@ template <class S>
                                                               S limit, S radius = S(0)) {
   unsigned mask = 0;
   for (int i = 0; i < 3; ++i)
-    mask |= unsigned(h[i] > S(0) && S(2) * h[i] * std::abs(d[i]) <= limit) << i;
+    mask |= (unsigned(h[i] > S(0)) & unsigned(S(2) * h[i] * std::abs(d[i]) <= limit)) << i;
   auto classify = [&d](unsigned m) {
     const int count = int(m & 1u) + int((m >> 1) & 1u) + int((m >> 2) & 1u);
     const int face = count == 3   ? dominant_axis(d)
@@ -339,10 +339,10 @@ void push_rounded_edge(Vec3T<S>& p0, Vec3T<S>& p1, const Vec3T<S>& toward, S rad
 /// outward normal, a vertex along `push` (unit, in the other frame; unused when the radius is 0),
 /// an edge along `push` at its deeper end and across the edge at the other (clip_features()). The
 /// order is support_feature()'s (a face counter-clockwise about its outward normal). Returns the
-/// count.
-template <class S>
+/// count. `rotation` may be an expression (a transpose), whose columns are then read in place.
+template <class S, class Rotation>
 int box_feature_points(const Vec3T<S>& h, const Vec3T<S>& d, const BoxFeatureAxes& f,
-                       const Mat3T<S>& rotation, const Vec3T<S>& translation, S radius,
+                       const Rotation& rotation, const Vec3T<S>& translation, S radius,
                        const Vec3T<S>& push, Vec3T<S>* out) {
   if (f.face_axis >= 0) {
     const int k = f.face_axis;

@@ -104,43 +104,49 @@ template <class S>
          std::abs(offset_along_b);
 }
 
-/// Fills the face terms of `out` (the 6 face axes and offset_along_b).
+/// Fills the face terms of `out` (the 6 face axes and offset_along_b), three axes at a time: the
+/// same sums in the same order as box_face_overlap_a() and box_face_overlap_b(), so the same bits,
+/// with packed arithmetic. `rows` is r^T (its columns are r's rows).
 template <class S>
 [[gnu::always_inline]] inline void box_face_axes(const Vec3T<S>& ha, const Vec3T<S>& hb,
                                                  const AbsRotation<S>& abs_r, const Mat3T<S>& r,
-                                                 const Vec3T<S>& t, BoxPairAxes<S>& out) {
-  for (int i = 0; i < 3; ++i) out.face_overlap[i] = box_face_overlap_a(i, ha, hb, abs_r, t);
+                                                 const Mat3T<S>& rows, const Vec3T<S>& t,
+                                                 BoxPairAxes<S>& out) {
+  using Column = Eigen::Map<Vec3T<S>>;
+  Column(out.face_overlap) = ha + abs_r.col(0).template head<3>() * hb[0] +
+                             abs_r.col(1).template head<3>() * hb[1] +
+                             abs_r.col(2).template head<3>() * hb[2] - t.cwiseAbs();
   // As box_box_verdict() computes it: the same offsets to the last bit.
   const Vec3T<S> offset_along_b = r.transpose() * t;
-  for (int j = 0; j < 3; ++j) {
-    out.offset_along_b[j] = offset_along_b[j];
-    out.face_overlap[3 + j] = box_face_overlap_b(j, ha, hb, r, offset_along_b[j]);
-  }
+  Column(out.offset_along_b) = offset_along_b;
+  Column(out.face_overlap + 3) = hb + rows.col(0).cwiseAbs() * ha[0] +
+                                 rows.col(1).cwiseAbs() * ha[1] + rows.col(2).cwiseAbs() * ha[2] -
+                                 offset_along_b.cwiseAbs();
 }
 
 /// Fills the edge terms of `out` (the 9 edge axes), apart from the face terms: most separated
-/// pairs are told apart by a face axis, and then these are not needed.
+/// pairs are told apart by a face axis, and then these are not needed. For each of A's axes e_i,
+/// the three axes e_i x r.col(j) at once, from rows i1 and i2 of r (columns of `rows`, r^T).
 template <class S>
 [[gnu::always_inline]] inline void box_edge_axes(const Vec3T<S>& ha, const Vec3T<S>& hb,
-                                                 const AbsRotation<S>& abs_r, const Mat3T<S>& r,
-                                                 const Vec3T<S>& t, BoxPairAxes<S>& out) {
+                                                 const Mat3T<S>& rows, const Vec3T<S>& t,
+                                                 BoxPairAxes<S>& out) {
+  using Column = Eigen::Map<Vec3T<S>>;
   for (int i = 0; i < 3; ++i) {
     const int i1 = kNextAxis[i], i2 = kPrevAxis[i];
-    // B's radius on e_i x r.col(j) is the sum over B's axes k of hb[k] |r.col(k) . axis|, the 2x2
-    // minors of rows i1, i2 of r. They are computed from r as given: for an exact rotation they
-    // equal entries of r, but that identity is off by r's rounding divided by the axis length,
-    // which nearly parallel edges make large. The minor of (j, j) is 0 and (k, j) is -(j, k).
-    const S m01 = std::abs(r(i1, 0) * r(i2, 1) - r(i2, 0) * r(i1, 1));
-    const S m02 = std::abs(r(i1, 0) * r(i2, 2) - r(i2, 0) * r(i1, 2));
-    const S m12 = std::abs(r(i1, 1) * r(i2, 2) - r(i2, 1) * r(i1, 2));
-    const S rb[3] = {hb[1] * m01 + hb[2] * m02, hb[0] * m01 + hb[2] * m12,
-                     hb[0] * m02 + hb[1] * m12};
-    for (int j = 0; j < 3; ++j) {
-      const S ra = ha[i1] * abs_r(i2, j) + ha[i2] * abs_r(i1, j);
-      const S offset = t[i2] * r(i1, j) - t[i1] * r(i2, j);
-      out.edge_overlap[3 * i + j] = ra + rb[j] - std::abs(offset);
-      out.edge_length_sq[3 * i + j] = r(i1, j) * r(i1, j) + r(i2, j) * r(i2, j);
-    }
+    const Vec3T<S> u = rows.col(i1), v = rows.col(i2);
+    // B's radius on e_i x r.col(j) is the sum over B's axes k != j of hb[k] |r.col(k) . axis|,
+    // the 2x2 minors of rows i1, i2 of r: the entries of u x v, m_12, m_02 and m_01 up to sign.
+    // They are computed from r as given: for an exact rotation they equal entries of r, but that
+    // identity is off by r's rounding divided by the axis length, which nearly parallel edges
+    // make large.
+    const Vec3T<S> m = u.cross(v).cwiseAbs();
+    const Vec3T<S> rb(hb[1] * m[2] + hb[2] * m[1], hb[0] * m[2] + hb[2] * m[0],
+                      hb[0] * m[1] + hb[1] * m[0]);
+    const Vec3T<S> ra = ha[i1] * v.cwiseAbs() + ha[i2] * u.cwiseAbs();
+    const Vec3T<S> offset = t[i2] * u - t[i1] * v;
+    Column(out.edge_overlap + 3 * i) = ra + rb - offset.cwiseAbs();
+    Column(out.edge_length_sq + 3 * i) = u.cwiseProduct(u) + v.cwiseProduct(v);
   }
 }
 
@@ -158,9 +164,10 @@ template <class S>
 BoxPairAxes<S> box_pair_axes(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
                              const Vec3T<S>& t) {
   const AbsRotation<S> abs_r = abs_rotation(r);
+  const Mat3T<S> rows = r.transpose();
   BoxPairAxes<S> axes;
-  box_face_axes(ha, hb, abs_r, r, t, axes);
-  box_edge_axes(ha, hb, abs_r, r, t, axes);
+  box_face_axes(ha, hb, abs_r, r, rows, t, axes);
+  box_edge_axes(ha, hb, rows, t, axes);
   return axes;
 }
 
@@ -172,11 +179,17 @@ BoxPairAxes<S> box_pair_axes(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T
 template <class S>
 BoxBoxAxis<S> box_best_axis(const BoxPairAxes<S>& axes, const Mat3T<S>& r, const Vec3T<S>& t,
                             S edge_bias) {
-  // The least face overlap (the first on ties).
+  // The least face overlap (the first on ties), carried along: read back as face_overlap[best],
+  // each step waited on a load whose address the previous step chose.
   int best = 0;
-  for (int k = 1; k < 6; ++k)
-    if (axes.face_overlap[k] < axes.face_overlap[best]) best = k;
-  S least = axes.face_overlap[best];
+  S least = axes.face_overlap[0];
+  for (int k = 1; k < 6; ++k) {
+    const S overlap = axes.face_overlap[k];
+    if (overlap < least) {
+      least = overlap;
+      best = k;
+    }
+  }
   // An edge axis k wins when overlap_k / length_k < min(least, face), compared as x |x|, which
   // keeps the order, times length_k^2: products instead of a square root and a division per
   // axis. The winner so far is key / key_length_sq in that form; comparing by cross products
@@ -300,7 +313,7 @@ BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3
   if (box_point_of_b_near_a(ha, hb, r, t, Vec3T<S>(-offset_along_b), gap))
     return BoxBoxVerdict::Overlapping;
   BoxPairAxes<S> axes;
-  box_edge_axes(ha, hb, abs_r, r, t, axes);
+  box_edge_axes(ha, hb, Mat3T<S>(r.transpose()), t, axes);
   return box_edge_verdict(axes, gap, apart);
 }
 
