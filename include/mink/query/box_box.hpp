@@ -89,39 +89,38 @@ template <class S>
   return a;
 }
 
-/// Overlap along A's face axis i, and along B's face axis j given B's centre along it.
+/// The overlaps along A's three face axes (unit: length), with packed arithmetic.
 template <class S>
-[[gnu::always_inline]] inline S box_face_overlap_a(int i, const Vec3T<S>& ha, const Vec3T<S>& hb,
-                                                   const AbsRotation<S>& abs_r, const Vec3T<S>& t) {
-  return ha[i] + abs_r(i, 0) * hb[0] + abs_r(i, 1) * hb[1] + abs_r(i, 2) * hb[2] - std::abs(t[i]);
+[[gnu::always_inline]] inline Vec3T<S> box_face_overlaps_a(const Vec3T<S>& ha, const Vec3T<S>& hb,
+                                                           const AbsRotation<S>& abs_r,
+                                                           const Vec3T<S>& t) {
+  return ha + abs_r.col(0).template head<3>() * hb[0] + abs_r.col(1).template head<3>() * hb[1] +
+         abs_r.col(2).template head<3>() * hb[2] - t.cwiseAbs();
 }
-/// B's face terms come from r itself, not from AbsRotation: read from there, GCC loaded rows 2 and
-/// 3 of a column as one pair, written by two separate stores, and stalled on store forwarding.
+/// The overlaps along B's three face axes given B's centre along them (r^T t); `rows` is r^T (its
+/// columns are r's rows). B's terms come from r itself, not from AbsRotation: read from there,
+/// GCC loaded rows 2 and 3 of a column as one pair, written by two separate stores, and stalled
+/// on store forwarding.
 template <class S>
-[[gnu::always_inline]] inline S box_face_overlap_b(int j, const Vec3T<S>& ha, const Vec3T<S>& hb,
-                                                   const Mat3T<S>& r, S offset_along_b) {
-  return hb[j] + std::abs(r(0, j)) * ha[0] + std::abs(r(1, j)) * ha[1] + std::abs(r(2, j)) * ha[2] -
-         std::abs(offset_along_b);
+[[gnu::always_inline]] inline Vec3T<S> box_face_overlaps_b(const Vec3T<S>& ha, const Vec3T<S>& hb,
+                                                           const Mat3T<S>& rows,
+                                                           const Vec3T<S>& offset_along_b) {
+  return hb + rows.col(0).cwiseAbs() * ha[0] + rows.col(1).cwiseAbs() * ha[1] +
+         rows.col(2).cwiseAbs() * ha[2] - offset_along_b.cwiseAbs();
 }
 
-/// Fills the face terms of `out` (the 6 face axes and offset_along_b), three axes at a time: the
-/// same sums in the same order as box_face_overlap_a() and box_face_overlap_b(), so the same bits,
-/// with packed arithmetic. `rows` is r^T (its columns are r's rows).
+/// Fills the face terms of `out` (the 6 face axes and offset_along_b). `rows` is r^T.
 template <class S>
 [[gnu::always_inline]] inline void box_face_axes(const Vec3T<S>& ha, const Vec3T<S>& hb,
                                                  const AbsRotation<S>& abs_r, const Mat3T<S>& r,
                                                  const Mat3T<S>& rows, const Vec3T<S>& t,
                                                  BoxPairAxes<S>& out) {
   using Column = Eigen::Map<Vec3T<S>>;
-  Column(out.face_overlap) = ha + abs_r.col(0).template head<3>() * hb[0] +
-                             abs_r.col(1).template head<3>() * hb[1] +
-                             abs_r.col(2).template head<3>() * hb[2] - t.cwiseAbs();
+  Column(out.face_overlap) = box_face_overlaps_a(ha, hb, abs_r, t);
   // As box_box_verdict() computes it: the same offsets to the last bit.
   const Vec3T<S> offset_along_b = r.transpose() * t;
   Column(out.offset_along_b) = offset_along_b;
-  Column(out.face_overlap + 3) = hb + rows.col(0).cwiseAbs() * ha[0] +
-                                 rows.col(1).cwiseAbs() * ha[1] + rows.col(2).cwiseAbs() * ha[2] -
-                                 offset_along_b.cwiseAbs();
+  Column(out.face_overlap + 3) = box_face_overlaps_b(ha, hb, rows, offset_along_b);
 }
 
 /// Fills the edge terms of `out` (the 9 edge axes), apart from the face terms: most separated
@@ -294,8 +293,9 @@ BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3
                               const Vec3T<S>& t, S gap) {
   const AbsRotation<S> abs_r = abs_rotation(r);
   bool apart = false;  // some axis shows a gap > 0 (but not > `gap`)
+  const Vec3T<S> face_a = box_face_overlaps_a(ha, hb, abs_r, t);
   for (int i = 0; i < 3; ++i) {
-    const S g = -box_face_overlap_a(i, ha, hb, abs_r, t);
+    const S g = -face_a[i];
     if (g > gap) return BoxBoxVerdict::Separated;
     apart |= g > S(0);
   }
@@ -305,15 +305,17 @@ BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3
   // B's centre along B's axes, whole (built entry by entry, it would stall when read whole): A's
   // centre is at -offset_along_b in B's frame.
   const Vec3T<S> offset_along_b = r.transpose() * t;
+  const Mat3T<S> rows = r.transpose();
+  const Vec3T<S> face_b = box_face_overlaps_b(ha, hb, rows, offset_along_b);
   for (int j = 0; j < 3; ++j) {
-    const S g = -box_face_overlap_b(j, ha, hb, r, offset_along_b[j]);
+    const S g = -face_b[j];
     if (g > gap) return BoxBoxVerdict::Separated;
     apart |= g > S(0);
   }
   if (box_point_of_b_near_a(ha, hb, r, t, Vec3T<S>(-offset_along_b), gap))
     return BoxBoxVerdict::Overlapping;
   BoxPairAxes<S> axes;
-  box_edge_axes(ha, hb, Mat3T<S>(r.transpose()), t, axes);
+  box_edge_axes(ha, hb, rows, t, axes);
   return box_edge_verdict(axes, gap, apart);
 }
 
