@@ -90,5 +90,63 @@ TEST(ClipBoxPair, SamePointsAsTheGeneralPath) {
   EXPECT_GT(counts.ref_on_b, 200);
 }
 
+// Where the separating axis is an edge pair's cross product and both features are edges, the one
+// manifold point is the edges' crossing seen along the normal, which lies inside both edges (the
+// Minkowski difference's facet that the normal belongs to holds the origin's projection). Checked
+// against the boxes' corners, not the box path's own steps: each point is its box's extreme point
+// along the normal, lies on one of its box's edges (two coordinates at their extents), and the
+// two are depth apart along the normal, on rotated, flat and rounded boxes.
+TEST(ClipBoxPair, CrossingEdgesTouchAtTheirCommonPerpendicular) {
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> g;
+  auto rotation = [&] { return Quat(g(rng), g(rng), g(rng), g(rng)).normalized(); };
+  int checked = 0, rounded = 0;
+  for (int k = 0; k < 4000; ++k) {
+    Vec3 ha(0.1 + u(rng), 0.1 + u(rng), 0.1 + u(rng)), hb(0.1 + u(rng), 0.1 + u(rng), 0.1 + u(rng));
+    if (k % 4 == 1) ha[k % 3] = 0;  // a flat box: a rectangle
+    const double ra = k % 4 == 2 ? 0.2 * u(rng) : 0.0, rb = k % 4 == 2 ? 0.2 * u(rng) : 0.0;
+    const Pose pa = Pose::from(Vec3(g(rng), g(rng), g(rng)) * 10, rotation());
+    const Pose pb = Pose::from(pa.translation + 0.9 * Vec3(g(rng), g(rng), g(rng)), rotation());
+    const Rounded<Box> a{Box{ha}, ra}, b{Box{hb}, rb};
+    const Pose rel = pa.relative(pb);
+    const double size = a.bounding_radius() + b.bounding_radius();
+    const auto axis = detail::box_box_axis(ha, hb, rel.rotation, rel.translation, 1e-9 * size);
+    if (axis.index < 6 || !(axis.overlap > 1e-6 * size)) continue;
+    const ManifoldResult m = manifold(a, pa, b, pb);
+    ASSERT_EQ(m.status, Status::Intersecting) << "case " << k;
+    if (m.count != 1) continue;  // an edge within the tolerance of a face: clipped
+    const Vec3 n = m.normal;
+    double top_a = -1e300, low_b = 1e300;
+    for (int c = 0; c < 8; ++c) {
+      const Vec3 s((c & 1) ? 1 : -1, (c & 2) ? 1 : -1, (c & 4) ? 1 : -1);
+      top_a = std::max(top_a, n.dot(pa.apply(s.cwiseProduct(ha))));
+      low_b = std::min(low_b, n.dot(pb.apply(s.cwiseProduct(hb))));
+    }
+    const double tol = 1e-12 * (size + pa.translation.norm());
+    const ManifoldPoint& p = m.points[0];
+    EXPECT_NEAR(n.dot(p.point_a), top_a + ra, tol) << "case " << k;
+    EXPECT_NEAR(n.dot(p.point_b), low_b - rb, tol) << "case " << k;
+    EXPECT_NEAR(p.depth, top_a - low_b + ra + rb, tol) << "case " << k;
+    EXPECT_LE((p.point_a - p.point_b - p.depth * n).norm(), tol) << "case " << k;
+    // On an edge of the core: two of the three local coordinates at their extents.
+    auto on_an_edge = [&](const Vec3& local, const Vec3& h) {
+      int at_extent = 0;
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_LE(std::abs(local[i]), h[i] + tol) << "case " << k;
+        at_extent += std::abs(std::abs(local[i]) - h[i]) <= tol;
+      }
+      return at_extent >= 2;
+    };
+    EXPECT_TRUE(on_an_edge(pa.inverse_apply(p.point_a - ra * n), ha)) << "case " << k;
+    EXPECT_TRUE(on_an_edge(pb.inverse_apply(p.point_b + rb * n), hb)) << "case " << k;
+    ++checked;
+    rounded += ra > 0;
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(checked, 300);
+  EXPECT_GT(rounded, 50);
+}
+
 }  // namespace
 }  // namespace mink
