@@ -12,65 +12,6 @@
 
 namespace mink::detail {
 
-/// An edge of box A (half extents ha) and an edge of box B (hb, at `rel` in A's frame), the
-/// features box_feature_axes() found along n (A's, in A's frame) and nb (B's, in B's frame), in
-/// A's frame: centres ca and cb, unit directions e_i (A's free axis) and v (B's free axis j as a
-/// column of the rotation), half lengths ha[i] and hb[j]. Unit directions and the boxes' axes
-/// make the closest points a few products with one division, where the general segment code
-/// (closest_points_of_segments()) takes squared lengths, reciprocals and range checks (190
-/// instructions a pair, a sixth of a crossing-edge manifold).
-template <class S>
-struct BoxEdgePair {
-  int i, j;
-  S half_a, half_b;
-  Vec3T<S> ca, cb, v, cross;  // cross = e_i x v, the lines' common perpendicular
-  S cross_sq;
-
-  BoxEdgePair(const Vec3T<S>& ha, const Vec3T<S>& n, const BoxFeatureAxes& fa, const Vec3T<S>& hb,
-              const Vec3T<S>& nb, const BoxFeatureAxes& fb, const PoseT<S>& rel)
-      : i(fa.free(0) ? 0 : (fa.free(1) ? 1 : 2)),
-        j(fb.free(0) ? 0 : (fb.free(1) ? 1 : 2)),
-        half_a(ha[i]),
-        half_b(hb[j]) {
-    // The corners' coordinates by the normal's signs, the free one then taken out: arithmetic on
-    // whole vectors (a vector written coordinate by coordinate and read whole stalls).
-    auto corner = [](const Vec3T<S>& h, const Vec3T<S>& d) {
-      return Vec3T<S>(d.unaryExpr([](S x) { return sign_nonneg(x); }).cwiseProduct(h));
-    };
-    const Vec3T<S> corner_a = corner(ha, n), corner_b = corner(hb, nb);
-    ca = corner_a - Vec3T<S>::Unit(i) * corner_a[i];
-    v = rel.rotation.col(j);
-    cb = rel.rotation * corner_b + rel.translation - v * corner_b[j];
-    cross = Vec3T<S>::Unit(i).cross(v);  // exact: products with 0 and 1
-    cross_sq = cross.squaredNorm();
-  }
-
-  /// Whether the edges are parallel to within `limit` (unit: length): |da x db| <= limit
-  /// max(|da|, |db|) for the whole edges da = 2 half_a e_i, db = 2 half_b v.
-  bool parallel(S limit) const {
-    const S shorter = S(2) * std::min(half_a, half_b);
-    return shorter * shorter * cross_sq <= limit * limit;
-  }
-
-  /// The closest points of the two edges, on_a on A's and on_b on B's: with w = cb - ca, the
-  /// squared distance |s e_i - t v - w|^2 is minimised over s in [-half_a, half_a] and t in
-  /// [-half_b, half_b] by the lines' critical s clamped, the best t for it clamped, and the best s
-  /// for that t clamped (Ericson's order, exact for a convex quadratic on a rectangle; the last
-  /// step without a branch, as closest_points_of_segments()). The critical s is
-  /// (w x v).(e_i x v) / |e_i x v|^2, whose error grows as 1 / sin of the edges' angle, not as its
-  /// square like Cramer's rule's; parallel lines (cross_sq = 0) take s = 0.
-  void closest_points(Vec3T<S>& on_a, Vec3T<S>& on_b) const {
-    const Vec3T<S> w = cb - ca;
-    const S b = v[i], c = w[i], f = v.dot(w);
-    S s = cross_sq > S(0) ? w.cross(v).dot(cross) / cross_sq : S(0);
-    s = std::clamp(s, -half_a, half_a);
-    const S t = std::clamp(b * s - f, -half_b, half_b);
-    s = std::clamp(c + b * t, -half_a, half_a);
-    on_a = ca + Vec3T<S>::Unit(i) * s;
-    on_b = cb + v * t;
-  }
-};
-
 /// clip_features() for two boxes a and b (Box or Rounded<Box>, see the file comment) whose cores
 /// overlap along `n`, the separating axis test's normal, and when their features are two crossing
 /// edges (no clipping), the edges' closest points as the one point (their difference is along n
@@ -106,7 +47,8 @@ void clip_box_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& rel,
     ref_is_a = fa.face_axis >= 0;
   } else {
     if (fa.free_count != 1 || fb.free_count != 1) return;  // a vertex: no clipping
-    const BoxEdgePair<S> edges(ha, n, fa, hb, nb, fb, rel);
+    const BoxEdgePair<S> edges(ha, fa.first_free(), n, hb, fb.first_free(), nb, rel.rotation,
+                               rel.translation);
     // Parallel edges clip against each other's end planes (rare: the separating axis test skips
     // axes of nearly parallel edges; the test is clip_features()': |da x db| <= limit
     // max(|da|, |db|) for the edge vectors da, db); crossing ones touch at their closest points.

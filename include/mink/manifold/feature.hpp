@@ -287,6 +287,8 @@ struct BoxFeatureAxes {
   int face_axis;       ///< the face's normal axis when free_count >= 2, else -1
 
   bool free(int i) const { return (free_mask >> i) & 1u; }
+  /// The lowest free axis (an edge's axis when free_count is 1); 2 when none is free.
+  int first_free() const { return free(0) ? 0 : (free(1) ? 1 : 2); }
 };
 
 // Plain scalars throughout, no array of flags: an array written flag by flag and then copied as a
@@ -340,10 +342,13 @@ void push_rounded_edge(Vec3T<S>& p0, Vec3T<S>& p1, const Vec3T<S>& toward, S rad
 /// an edge along `push` at its deeper end and across the edge at the other (clip_features()). The
 /// order is support_feature()'s (a face counter-clockwise about its outward normal). Returns the
 /// count. `rotation` may be an expression (a transpose), whose columns are then read in place.
+/// Always inlined: out of line, it cost a box pair's manifold 34 instructions more (1.6 %).
 template <class S, class Rotation>
-int box_feature_points(const Vec3T<S>& h, const Vec3T<S>& d, const BoxFeatureAxes& f,
-                       const Rotation& rotation, const Vec3T<S>& translation, S radius,
-                       const Vec3T<S>& push, Vec3T<S>* out) {
+[[gnu::always_inline]] inline int box_feature_points(const Vec3T<S>& h, const Vec3T<S>& d,
+                                                     const BoxFeatureAxes& f,
+                                                     const Rotation& rotation,
+                                                     const Vec3T<S>& translation, S radius,
+                                                     const Vec3T<S>& push, Vec3T<S>* out) {
   if (f.face_axis >= 0) {
     const int k = f.face_axis;
     const S side = sign_nonneg(d[k]);
@@ -366,7 +371,7 @@ int box_feature_points(const Vec3T<S>& h, const Vec3T<S>& d, const BoxFeatureAxe
     out[0] = c + radius * push;
     return 1;
   }
-  const int free_axis = f.free(0) ? 0 : (f.free(1) ? 1 : 2);
+  const int free_axis = f.first_free();
   const Vec3T<S> e = rotation.col(free_axis) * h[free_axis];
   out[0] = c - e;
   out[1] = c + e;

@@ -100,7 +100,9 @@ struct ManifoldResultT {
   S depth = S(0);                       ///< >= 0 (unit: length), as contact()
   Vec3T<S> normal = Vec3T<S>::UnitZ();  ///< unit, world frame, from A towards B, shared by points
   int count = 0;                        ///< number of valid entries of `points`, 0..4
-  std::array<ManifoldPointT<S>, 4> points = {};  ///< the deepest first
+  /// The deepest first. 16-byte aligned: the zeroing's paired stores then never straddle a cache
+  /// line (on box pairs, one that did held half of manifold()'s own samples).
+  alignas(16) std::array<ManifoldPointT<S>, 4> points = {};
   S error_bound = S(0);  ///< as contact(): bound on the error of distance or depth (unit: length)
   int iterations = 0;    ///< support evaluations of GJK and EPA (0 for two boxes)
   bool normal_chosen = false;   ///< as contact(): several normals were equally good
