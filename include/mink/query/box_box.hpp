@@ -367,10 +367,11 @@ struct BoxEdgePair {
   BoxEdgePair(const Vec3T<S>& ha, int axis_a, const Vec3T<S>& along_a, const Vec3T<S>& hb,
               int axis_b, const Vec3T<S>& along_b, const Mat3T<S>& r, const Vec3T<S>& t)
       : i(axis_a), j(axis_b), half_a(ha[axis_a]), half_b(hb[axis_b]) {
-    // The corners by the signs, the edge's own coordinate then set to 0 (exactly): arithmetic on
-    // whole vectors, as a vector written coordinate by coordinate and read whole stalls.
+    // The box's support corner along the direction, the edge's own coordinate then set to 0
+    // (exactly) by arithmetic on the whole vector: written coordinate by coordinate and read
+    // whole, it would stall.
     auto centre = [](const Vec3T<S>& h, const Vec3T<S>& d, int k) {
-      const Vec3T<S> corner = d.unaryExpr([](S x) { return sign_nonneg(x); }).cwiseProduct(h);
+      const Vec3T<S> corner = BoxT<S>{h}.support_core(d);
       return Vec3T<S>(corner - Vec3T<S>::Unit(k) * corner[k]);
     };
     ca = centre(ha, along_a, i);
