@@ -177,12 +177,12 @@ using EnclosePointT = std::conditional_t<kWitnesses, SimplexVertexT<S>, PointAnd
 /// `directions[0..count)` are those of the final simplex (or the separating direction), for the
 /// warm-start cache.
 ///
-/// `first` (optional): the support point along diff.translation, already computed (and counted in
-/// `iterations`) by the caller, which is the first one this phase asks for. With `kWitnesses`
-/// (contact(), whose EPA starts from the tetrahedron) the points carry their support points on A
-/// and B, and `simplex` receives the final simplex: when the answer is Intersecting, the
-/// enclosing tetrahedron with the origin's barycentric weights; when it is Separated, the simplex
-/// and last the support point whose plane separates (no weights).
+/// `first` (optional): a support point and its direction (usually diff.translation), already
+/// computed (and counted in `iterations`) by the caller: the phase starts from it. With
+/// `kWitnesses` (contact(), whose EPA starts from the tetrahedron) the points carry their support
+/// points on A and B, and `simplex` receives the final simplex: when the answer is Intersecting,
+/// the enclosing tetrahedron with the origin's barycentric weights; when it is Separated, the
+/// simplex and last the support point whose plane separates (no weights).
 template <bool kWitnesses = false, ConvexShape A, ConvexShape B>
 EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scalar inside,
                               int max_supports, int& iterations,
@@ -196,7 +196,7 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
   // step below decides what to keep. Points are moved whole (no index lists): this loop is the
   // whole boolean test on small hulls, and its bookkeeping once cost as much as the supports.
   P p[3];
-  V d = first_direction(diff);
+  V d = first ? V(first->dir) : first_direction(diff);
   count = 0;
 
   while (iterations < max_supports) {
@@ -628,9 +628,10 @@ struct GjkBooleanOutcome {
 /// (`stalled`) and the caller hands the question to run_gjk_distance(), which has the witness
 /// points to get unstuck.
 ///
-/// `first` (optional): the support point along diff.translation (as the first phase would take
-/// it), already computed by the caller, who passes it only where the first phase runs (radius 0,
-/// no usable cache); it counts as one iteration.
+/// `first` (optional): a support point and its direction (the first phase's first, or a point
+/// core's support plane, query/point_solid.hpp), already computed by the caller, who passes it only
+/// when there is no usable cache; it counts as one iteration, and the first phase (radius 0) or
+/// else the loop starts from it.
 template <ConvexShape A, ConvexShape B>
 GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(
     const CoreDifference<A, B>& diff, typename A::Scalar radius, typename A::Scalar size,
@@ -655,6 +656,7 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(
   };
 
   const bool warm = cache_is_usable(cache);
+  if (warm) first = nullptr;  // the cache's points come first (callers pass none then)
   if (radius == S(0) && !warm) {
     // Cores with no radius: the cheap first phase decides most pairs; the loop below takes the
     // rest (the origin near the boundary of A - B), from a fresh start.
@@ -672,6 +674,7 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(
       return out;
     }
     count = 0;
+    first = nullptr;  // the phase took it
   }
 
   Vec3T<S> v;
@@ -689,6 +692,8 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(
     }
     v = reduce(closest_of_simplex(points, count), count);
     v_in_set = true;
+  } else if (first) {
+    v = -first->dir;  // the loop's first support call is the caller's
   } else {
     v = -diff.translation;  // along the line of centres
     if (!(v.squaredNorm() > S(0))) v = Vec3T<S>::UnitX();
@@ -705,7 +710,8 @@ GjkBooleanOutcome<typename A::Scalar> run_gjk_boolean(
       out.status = Status::IterationLimit;
       break;
     }
-    const Vec3T<S> w = diff.support_point(-v);
+    const Vec3T<S> w = first ? first->w : diff.support_point(-v);
+    first = nullptr;
     ++out.iterations;
     const S vw = v.dot(w);
     // A separating plane with room for the radii decides: the lower bound v.w / |v| exceeds

@@ -101,6 +101,20 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
       return result;
     }
   }
+  // A point core against a core with no closed form: that core's support plane facing the point
+  // decides most pairs apart for less than GJK's set-up, and GJK starts from it otherwise
+  // (query/point_solid.hpp).
+  detail::PointSupportPlane<S> plane;
+  if constexpr (detail::kPointCorePair<A, B>) {
+    if (!detail::point_core_has_closed_form(a, b)) {
+      plane = detail::point_support_plane(a, pose_a, b, pose_b);
+      if (plane.beyond(reach)) {
+        result.status = Status::Separated;
+        result.iterations = 1;
+        return result;
+      }
+    }
+  }
   if constexpr (detail::BoxCore<A>::value && detail::BoxCore<B>::value) {
     // Two boxes: a point of B within reach of A, or the separating axis test, decides in a few
     // flops unless the axes' largest gap lies between 0 and the radii plus the touching tolerance
@@ -133,6 +147,12 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
             cache, 1, [&first](int) { return first.dir; }, Vec3T<S>(Vec3T<S>::Zero()));
         return result;
       }
+      first_computed = &first;
+    }
+  }
+  if constexpr (detail::kPointCorePair<A, B>) {
+    if (plane.d_sq > S(0) && !detail::cache_is_usable(cache)) {
+      first = plane.in_difference(diff);
       first_computed = &first;
     }
   }

@@ -20,6 +20,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/math/lanes.hpp"
 #include "mink/math/pose.hpp"
@@ -818,7 +819,8 @@ struct CorePair {
   bool tie;
 };
 
-/// The point core of a point-core shape in the frame of a solid-core shape (either order).
+/// The point core of a point-core shape in the frame of the other shape, a solid core or any
+/// other (either order).
 /// Always inlined: out of line, GCC returned the point through memory, stored a coordinate at a
 /// time, for callers that load it two at a time, which stalls on store forwarding (with the range
 /// check's and gap_verdict()'s packed reads, a third of a sphere-polytope test).
@@ -826,7 +828,7 @@ template <class A, class B>
 [[gnu::always_inline]] inline Vec3T<typename A::Scalar> point_in_solid_frame(
     const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     const PoseT<typename A::Scalar>& pose_b) {
-  if constexpr (SolidCore<A>::value)
+  if constexpr (PointCore<B>::value)
     return pose_a.inverse_rotate(SegmentCore<B>::world(b, pose_b, pose_a.translation).centre);
   else
     return pose_b.inverse_rotate(SegmentCore<A>::world(a, pose_a, pose_b.translation).centre);
@@ -846,13 +848,88 @@ const auto* solid_of(const A& a, const B& b) {
 }
 
 /// Whether the point core is within `reach` of the solid core, for the yes/no test (Unsure: GJK
-/// decides).
+/// decides, or the support plane below when the solid has no closed form yet).
 template <class A, class B>
 GapVerdict point_solid_verdict(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
                                const PoseT<typename A::Scalar>& pose_b, typename A::Scalar reach) {
   const auto* solid = solid_of(a, b);
   if (!solid) return GapVerdict::Unsure;
   return SolidOf<A, B>::within_reach(*solid, point_in_solid_frame(a, pose_a, b, pose_b), reach);
+}
+
+/// A point core against any other core that is not a point or a segment (either order).
+template <class A, class B>
+inline constexpr bool kPointCorePair = (PointCore<A>::value || PointCore<B>::value) &&
+                                       !kSegmentCores<A, B>;
+
+/// Whether the pair's other core has a closed form against the point core (point_solid_verdict()
+/// answers); false for shapes with none (a hull, a sum) and for a polytope without its planes.
+template <class A, class B>
+bool point_core_has_closed_form(const A& a, const B& b) {
+  if constexpr (kPointSolid<A, B>)
+    return solid_of(a, b) != nullptr;
+  else
+    return false;
+}
+
+/// A point core against a core with no closed form (a polytope of 64 points or more, which
+/// climbs its hull; a hull; a sum): one support call of the other core, in its own frame, along
+/// the line from its centre (its origin when it names none) to the point. Its support plane is
+/// GJK's first and decides most such pairs apart (beyond()); it costs one rotation of the point
+/// into the other's frame, where GJK first builds the whole relative pose. When it does not
+/// decide, GJK starts from it (in_difference()), so the support call is not wasted.
+template <class S>
+struct PointSupportPlane {
+  Vec3T<S> point;    ///< the point core, in the other core's frame
+  Vec3T<S> d;        ///< from the other core's centre to the point (the other's frame)
+  Vec3T<S> support;  ///< the other core's support point along d (the other's frame)
+  S d_sq = S(0);     ///< |d|^2; 0 when the point is at the centre (no plane: nothing computed)
+
+  /// The point lies beyond the support plane by more than `reach`.
+  bool beyond(S reach) const {
+    return d_sq > S(0) && exceeds_times_length(S(d.dot(point - support)), reach, d, d_sq);
+  }
+
+  /// The same support call as a point of A - B with the direction that finds it, in A's frame
+  /// (GJK's convention: w = support of A along dir minus support of B along -dir).
+  template <class A, class B>
+  PointAndDirection<S> in_difference(const CoreDifference<A, B>& diff) const {
+    if constexpr (PointCore<A>::value) {
+      // B's support along d (B's frame) is B's along -dir in A's frame.
+      const Vec3T<S> dir = -(diff.rotation * d);
+      return {Vec3T<S>(diff.a.support_core(dir) - (diff.rotation * support + diff.translation)),
+              dir};
+    } else {
+      return {Vec3T<S>(support - point), d};
+    }
+  }
+};
+
+/// The PointSupportPlane of a kPointCorePair (either order).
+template <class A, class B>
+PointSupportPlane<typename A::Scalar> point_support_plane(const A& a,
+                                                          const PoseT<typename A::Scalar>& pose_a,
+                                                          const B& b,
+                                                          const PoseT<typename A::Scalar>& pose_b) {
+  using S = typename A::Scalar;
+  const auto& other = [&]() -> const auto& {
+    if constexpr (PointCore<B>::value)
+      return a;
+    else
+      return b;
+  }
+  ();
+  PointSupportPlane<S> plane;
+  plane.point = point_in_solid_frame(a, pose_a, b, pose_b);
+  plane.d = plane.point;
+  if constexpr (HasCoreCentre<std::remove_cvref_t<decltype(other)>>) plane.d -= other.core_centre();
+  plane.d_sq = plane.d.squaredNorm();
+  if (!(plane.d_sq > S(0))) {
+    plane.d_sq = S(0);
+    return plane;
+  }
+  plane.support = other.support_core(plane.d);
+  return plane;
 }
 
 /// The point core against the solid core in the solid's frame (PointSolidLocal). Nothing: GJK and

@@ -347,3 +347,101 @@ TEST(PointPolytope, CentreOnTheSurfaceOrAnEdge) {
 }
 
 }  // namespace point_polytope_test
+
+namespace point_polytope_test {
+
+/// The yes/no test of a point core against cores with no closed form, which the support plane
+/// facing the point decides apart or hands to GJK with its support point (query/point_solid.hpp):
+/// polytopes of 64 to 72 points once they climb their hull, hulls, and rounded polytopes without
+/// planes; spheres and rounded points off their frame's origin, in either order, with and without
+/// a warm cache. The sphere's radius is the centre's distance from the polytope (brute force, long
+/// double) plus or minus 1e-10 .. 1e-1 of the size, or any radius for a centre inside.
+TEST(PointPolytope, BooleanAgainstClimbingHullsMatchesBruteForce) {
+  const int n = oracle::sweep_count(240, 60);
+  int apart = 0, within = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = 660000 + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const double scale = rng.log_uniform(0.05, 2);
+    const int kind = rng.integer(0, 3);  // on a sphere, in a ball, a box with face points, flat
+    std::vector<Vec3> local;
+    const int count = rng.integer(64, 72);
+    for (int k = 0; k < count; ++k) {
+      Vec3 p = kind == 0 ? Vec3(scale * rng.unit()) : rng.in_ball(scale);
+      if (kind == 2) {  // on a face of the box [-scale, scale]^3 (plateaus for the climb)
+        const int axis = rng.integer(0, 2);
+        p = Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)) * scale;
+        p[axis] = rng.chance(0.5) ? scale : -scale;
+      }
+      if (kind == 3) p.z() = 0;
+      local.push_back(p);
+    }
+    const int solid = rng.integer(0, 2);  // polytope that climbs, hull, rounded polytope
+    auto polytope = mink::Polytope::make(local).value();
+    if (solid != 2)
+      for (std::uint32_t k = 0; k <= mink::kPolytopeHullAfterSupports && !polytope.climbs(); ++k)
+        (void)polytope.support_core(rng.unit());
+    const auto hull = mink::ConvexHullShape::make(local).value();
+    const double skin = solid == 2 ? scale * rng.log_uniform(1e-3, 0.3) : 0.0;
+    const mink::Rounded<mink::Polytope> rounded{polytope, skin};
+    ASSERT_EQ(rounded.shape.face_planes(), nullptr);
+
+    const Pose pb = rng.pose(rng.chance(0.2) ? 1e4 : 5);
+    const Vec3 centre_local = centre_near(rng, local, scale);
+    const Vec3 centre = pb.apply(centre_local);
+    const auto core = oracle::polytope_pair({widen(centre)}, oracle::world_points(local, pb));
+    const double position = pb.translation.norm();
+    const double size = 2 * scale;
+    const double margin = (size + 1e-6 * position) * rng.log_uniform(1e-10, 1e-1);
+    bool overlap = true;
+    double radius = scale * rng.log_uniform(1e-3, 1);
+    if (core.distance > 0) {
+      if (!(double(core.distance) - skin > 2 * margin)) continue;
+      overlap = rng.chance(0.5);
+      radius = double(core.distance) - skin + (overlap ? margin : -margin);
+    }
+    // The point core: a sphere at its pose's origin, or a rounded point off it.
+    const bool offset = rng.chance(0.5);
+    const Vec3 from_origin = offset ? Vec3(scale * rng.unit()) : Vec3::Zero();
+    const Pose pa_sphere = Pose::from(centre, rng.rotation());
+    Pose pa_point = pa_sphere;
+    pa_point.translation = centre - pa_sphere.rotation * from_origin;
+    const mink::Sphere sphere{radius};
+    const mink::Rounded<mink::Point> point{mink::Point{from_origin}, radius};
+    const bool point_first = rng.chance(0.5);
+    const bool warm = rng.chance(0.3);
+    SCOPED_TRACE(testing::Message()
+                 << "kind " << kind << ", solid " << solid << ", distance " << double(core.distance)
+                 << ", margin " << margin << ", point first " << point_first << ", offset "
+                 << offset << ", warm " << warm);
+    auto query = [&](const auto& other) {
+      mink::GjkCache cache;
+      auto ask = [&](const Pose& moved) {
+        mink::Tolerances tol;
+        if (offset)
+          return point_first ? mink::intersect(point, moved, other, pb, tol, &cache)
+                             : mink::intersect(other, pb, point, moved, tol, &cache);
+        return point_first ? mink::intersect(sphere, moved, other, pb, tol, &cache)
+                           : mink::intersect(other, pb, sphere, moved, tol, &cache);
+      };
+      const Pose pa = offset ? pa_point : pa_sphere;
+      if (warm) {
+        Pose before = pa;
+        before.translation += 0.05 * scale * rng.unit();
+        (void)ask(before);
+      }
+      return ask(pa);
+    };
+    const mink::IntersectResult got = solid == 0   ? query(polytope)
+                                      : solid == 1 ? query(hull)
+                                                   : query(rounded);
+    ASSERT_EQ(got.error, nullptr);
+    EXPECT_EQ(got.intersect, overlap);
+    (overlap ? within : apart) += 1;
+  }
+  EXPECT_GT(apart, n / 5);
+  EXPECT_GT(within, n / 5);
+}
+
+}  // namespace point_polytope_test
