@@ -13,7 +13,10 @@
 /// (query/box_box.hpp: when the cores overlap or are clearly apart, and no two edges are parallel
 /// to within 1e-6 without being exactly parallel; a point of one core within reach of the other
 /// also proves an overlap), spheres and points against boxes, cylinders and ellipsoids
-/// (query/point_solid.hpp), and capsules and segments against boxes (query/segment_box.hpp).
+/// (query/point_solid.hpp), and capsules and segments against boxes (query/segment_box.hpp). A
+/// sphere or point against a core with no closed form (a polytope of 64 points or more, a hull, a
+/// sum) first tries that core's support plane facing it, and GJK starts from that support point
+/// when the plane does not decide (query/point_solid.hpp, PointSupportPlane).
 #pragma once
 
 #include "mink/epa/epa.hpp"
@@ -57,6 +60,35 @@ template <class S>
   result.status = result.intersect ? Status::Intersecting : Status::Separated;
 }
 
+/// The direction of a PointSupportPlane (point core A or B) in A's frame, as GJK's direction that
+/// finds that support point (support of A along it minus support of B against it): for the warm
+/// start, which stores it.
+template <class A, class S>
+Vec3T<S> plane_direction_in_a(const PointSupportPlane<S>& plane, const PoseT<S>& pose_a,
+                              const PoseT<S>& pose_b) {
+  if constexpr (PointCore<A>::value)
+    return -pose_a.inverse_rotate(pose_b.rotate(plane.d));  // B's support along d, its frame
+  else
+    return plane.d;
+}
+
+/// The support call of a PointSupportPlane as a point of A - B in A's frame with its direction,
+/// for run_gjk_boolean()'s `first`: written as CoreDifference::support_point() computes B's
+/// points (B's support mapped by diff's pose), so that GJK's later points round alike.
+template <class A, class B, class S>
+PointAndDirection<S> plane_in_difference(const PointSupportPlane<S>& plane,
+                                         const CoreDifference<A, B>& diff) {
+  if constexpr (PointCore<A>::value) {
+    const Vec3T<S> dir = -(diff.rotation * plane.d);
+    return {Vec3T<S>(diff.a.support_core(dir) - (diff.rotation * plane.support + diff.translation)),
+            dir};
+  } else {
+    return {
+        Vec3T<S>(plane.support - (diff.rotation * diff.b.support_core(plane.d) + diff.translation)),
+        plane.d};
+  }
+}
+
 /// intersect()'s work, for pairs within the range of lengths (query/scale_range.hpp).
 template <ConvexShape A, ConvexShape B>
 IntersectResultT<typename A::Scalar> intersect_in_range(
@@ -85,13 +117,17 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
     detail::intersect_from_verdict(detail::gap_verdict(Vec3T<S>(on_b - on_a), reach), result);
     return result;
   }
+  bool point_closed_form = false;  // a point core against a solid with a closed form
   if constexpr (detail::kPointSolid<A, B>) {
     // A sphere or point against a box, cylinder, cone, ellipsoid or small polytope: closed form, no
-    // iteration.
-    const auto verdict = detail::point_solid_verdict(a, pose_a, b, pose_b, reach);
-    if (verdict != detail::GapVerdict::Unsure) {
-      detail::intersect_from_verdict(verdict, result);
-      return result;
+    // iteration. Asked once: a polytope counts the asks towards building its planes.
+    if (const auto* solid = detail::solid_of(a, b)) {
+      point_closed_form = true;
+      const auto verdict = detail::point_solid_verdict(*solid, a, pose_a, b, pose_b, reach);
+      if (verdict != detail::GapVerdict::Unsure) {
+        detail::intersect_from_verdict(verdict, result);
+        return result;
+      }
     }
   }
   if constexpr (detail::kSegmentBox<A, B>) {
@@ -103,14 +139,17 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
   }
   // A point core against a core with no closed form: that core's support plane facing the point
   // decides most pairs apart for less than GJK's set-up, and GJK starts from it otherwise
-  // (query/point_solid.hpp).
+  // (query/point_solid.hpp). Not with a usable cache, whose warm start serves instead.
   detail::PointSupportPlane<S> plane;
   if constexpr (detail::kPointCorePair<A, B>) {
-    if (!detail::point_core_has_closed_form(a, b)) {
+    if (!point_closed_form && !detail::cache_is_usable(cache)) {
       plane = detail::point_support_plane(a, pose_a, b, pose_b);
       if (plane.beyond(reach)) {
         result.status = Status::Separated;
         result.iterations = 1;
+        detail::save_cache(
+            cache, 1, [&](int) { return detail::plane_direction_in_a<A>(plane, pose_a, pose_b); },
+            Vec3T<S>(Vec3T<S>::Zero()));
         return result;
       }
     }
@@ -151,8 +190,8 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
     }
   }
   if constexpr (detail::kPointCorePair<A, B>) {
-    if (plane.d_sq > S(0) && !detail::cache_is_usable(cache)) {
-      first = plane.in_difference(diff);
+    if (plane.d_sq > S(0)) {
+      first = detail::plane_in_difference(plane, diff);
       first_computed = &first;
     }
   }

@@ -20,7 +20,6 @@
 #include <optional>
 #include <type_traits>
 
-#include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/math/lanes.hpp"
 #include "mink/math/pose.hpp"
@@ -847,14 +846,13 @@ const auto* solid_of(const A& a, const B& b) {
     return SolidCore<B>::core(b);
 }
 
-/// Whether the point core is within `reach` of the solid core, for the yes/no test (Unsure: GJK
-/// decides, or the support plane below when the solid has no closed form yet).
+/// Whether the point core is within `reach` of the solid core, whose closed form is `solid`
+/// (solid_of(a, b), when it has one), for the yes/no test (Unsure: GJK decides).
 template <class A, class B>
-GapVerdict point_solid_verdict(const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+GapVerdict point_solid_verdict(const typename SolidOf<A, B>::Core& solid, const A& a,
+                               const PoseT<typename A::Scalar>& pose_a, const B& b,
                                const PoseT<typename A::Scalar>& pose_b, typename A::Scalar reach) {
-  const auto* solid = solid_of(a, b);
-  if (!solid) return GapVerdict::Unsure;
-  return SolidOf<A, B>::within_reach(*solid, point_in_solid_frame(a, pose_a, b, pose_b), reach);
+  return SolidOf<A, B>::within_reach(solid, point_in_solid_frame(a, pose_a, b, pose_b), reach);
 }
 
 /// A point core against any other core that is not a point or a segment (either order).
@@ -862,22 +860,12 @@ template <class A, class B>
 inline constexpr bool kPointCorePair = (PointCore<A>::value || PointCore<B>::value) &&
                                        !kSegmentCores<A, B>;
 
-/// Whether the pair's other core has a closed form against the point core (point_solid_verdict()
-/// answers); false for shapes with none (a hull, a sum) and for a polytope without its planes.
-template <class A, class B>
-bool point_core_has_closed_form(const A& a, const B& b) {
-  if constexpr (kPointSolid<A, B>)
-    return solid_of(a, b) != nullptr;
-  else
-    return false;
-}
-
 /// A point core against a core with no closed form (a polytope of 64 points or more, which
 /// climbs its hull; a hull; a sum): one support call of the other core, in its own frame, along
 /// the line from its centre (its origin when it names none) to the point. Its support plane is
 /// GJK's first and decides most such pairs apart (beyond()); it costs one rotation of the point
 /// into the other's frame, where GJK first builds the whole relative pose. When it does not
-/// decide, GJK starts from it (in_difference()), so the support call is not wasted.
+/// decide, GJK starts from it (intersect.hpp), so the support call is not wasted.
 template <class S>
 struct PointSupportPlane {
   Vec3T<S> point;    ///< the point core, in the other core's frame
@@ -888,20 +876,6 @@ struct PointSupportPlane {
   /// The point lies beyond the support plane by more than `reach`.
   bool beyond(S reach) const {
     return d_sq > S(0) && exceeds_times_length(S(d.dot(point - support)), reach, d, d_sq);
-  }
-
-  /// The same support call as a point of A - B with the direction that finds it, in A's frame
-  /// (GJK's convention: w = support of A along dir minus support of B along -dir).
-  template <class A, class B>
-  PointAndDirection<S> in_difference(const CoreDifference<A, B>& diff) const {
-    if constexpr (PointCore<A>::value) {
-      // B's support along d (B's frame) is B's along -dir in A's frame.
-      const Vec3T<S> dir = -(diff.rotation * d);
-      return {Vec3T<S>(diff.a.support_core(dir) - (diff.rotation * support + diff.translation)),
-              dir};
-    } else {
-      return {Vec3T<S>(support - point), d};
-    }
   }
 };
 

@@ -352,21 +352,24 @@ namespace point_polytope_test {
 
 /// The yes/no test of a point core against cores with no closed form, which the support plane
 /// facing the point decides apart or hands to GJK with its support point (query/point_solid.hpp):
-/// polytopes of 64 to 72 points once they climb their hull, hulls, and rounded polytopes without
-/// planes; spheres and rounded points off their frame's origin, in either order, with and without
-/// a warm cache. The sphere's radius is the centre's distance from the polytope (brute force, long
-/// double) plus or minus 1e-10 .. 1e-1 of the size, or any radius for a centre inside.
-TEST(PointPolytope, BooleanAgainstClimbingHullsMatchesBruteForce) {
-  const int n = oracle::sweep_count(240, 60);
+/// polytopes of 64 to 72 points once they climb their hull, hulls, rounded polytopes, and
+/// polytopes of 8 to 40 points before their planes; spheres, rounded points off their frame's
+/// origin and bare points (radius 0: GJK's first phase takes the plane's point), in either order,
+/// with and without a warm cache. The radius is the centre's distance from the polytope (brute
+/// force, long double) plus or minus 1e-10 .. 1e-1 of the size, or any radius for a centre inside.
+TEST(PointPolytope, BooleanAgainstHullsWithoutClosedFormMatchesBruteForce) {
+  const int n = oracle::sweep_count(300, 80);
   int apart = 0, within = 0;
   for (int i = 0; i < n; ++i) {
     const std::uint64_t seed = 660000 + i;
     SCOPED_TRACE(oracle::seed_note(seed));
     Rng rng(seed);
     const double scale = rng.log_uniform(0.05, 2);
+    // A polytope that climbs, a hull, a rounded polytope, a small polytope before its planes.
+    const int solid = rng.integer(0, 3);
     const int kind = rng.integer(0, 3);  // on a sphere, in a ball, a box with face points, flat
     std::vector<Vec3> local;
-    const int count = rng.integer(64, 72);
+    const int count = solid == 3 ? rng.integer(8, 40) : rng.integer(64, 72);
     for (int k = 0; k < count; ++k) {
       Vec3 p = kind == 0 ? Vec3(scale * rng.unit()) : rng.in_ball(scale);
       if (kind == 2) {  // on a face of the box [-scale, scale]^3 (plateaus for the climb)
@@ -377,15 +380,13 @@ TEST(PointPolytope, BooleanAgainstClimbingHullsMatchesBruteForce) {
       if (kind == 3) p.z() = 0;
       local.push_back(p);
     }
-    const int solid = rng.integer(0, 2);  // polytope that climbs, hull, rounded polytope
     auto polytope = mink::Polytope::make(local).value();
-    if (solid != 2)
+    if (solid < 2)
       for (std::uint32_t k = 0; k <= mink::kPolytopeHullAfterSupports && !polytope.climbs(); ++k)
         (void)polytope.support_core(rng.unit());
     const auto hull = mink::ConvexHullShape::make(local).value();
     const double skin = solid == 2 ? scale * rng.log_uniform(1e-3, 0.3) : 0.0;
     const mink::Rounded<mink::Polytope> rounded{polytope, skin};
-    ASSERT_EQ(rounded.shape.face_planes(), nullptr);
 
     const Pose pb = rng.pose(rng.chance(0.2) ? 1e4 : 5);
     const Vec3 centre_local = centre_near(rng, local, scale);
@@ -394,36 +395,44 @@ TEST(PointPolytope, BooleanAgainstClimbingHullsMatchesBruteForce) {
     const double position = pb.translation.norm();
     const double size = 2 * scale;
     const double margin = (size + 1e-6 * position) * rng.log_uniform(1e-10, 1e-1);
+    const bool bare = rng.chance(0.25);
     bool overlap = true;
-    double radius = scale * rng.log_uniform(1e-3, 1);
+    double radius = bare ? 0.0 : scale * rng.log_uniform(1e-3, 1);
     if (core.distance > 0) {
-      if (!(double(core.distance) - skin > 2 * margin)) continue;
-      overlap = rng.chance(0.5);
-      radius = double(core.distance) - skin + (overlap ? margin : -margin);
+      const double gap = double(core.distance) - skin;
+      if (bare) {
+        if (!(std::abs(gap) > 2 * margin)) continue;
+        overlap = gap < 0;
+      } else {
+        if (!(gap > 2 * margin)) continue;
+        overlap = rng.chance(0.5);
+        radius = gap + (overlap ? margin : -margin);
+      }
     }
-    // The point core: a sphere at its pose's origin, or a rounded point off it.
-    const bool offset = rng.chance(0.5);
+    // The point core: a sphere at its pose's origin, or a (rounded) point off it.
+    const bool offset = bare || rng.chance(0.5);
     const Vec3 from_origin = offset ? Vec3(scale * rng.unit()) : Vec3::Zero();
     const Pose pa_sphere = Pose::from(centre, rng.rotation());
     Pose pa_point = pa_sphere;
     pa_point.translation = centre - pa_sphere.rotation * from_origin;
     const mink::Sphere sphere{radius};
     const mink::Rounded<mink::Point> point{mink::Point{from_origin}, radius};
+    const mink::Point bare_point{from_origin};
     const bool point_first = rng.chance(0.5);
     const bool warm = rng.chance(0.3);
     SCOPED_TRACE(testing::Message()
                  << "kind " << kind << ", solid " << solid << ", distance " << double(core.distance)
                  << ", margin " << margin << ", point first " << point_first << ", offset "
-                 << offset << ", warm " << warm);
+                 << offset << ", bare " << bare << ", warm " << warm);
     auto query = [&](const auto& other) {
       mink::GjkCache cache;
       auto ask = [&](const Pose& moved) {
-        mink::Tolerances tol;
-        if (offset)
-          return point_first ? mink::intersect(point, moved, other, pb, tol, &cache)
-                             : mink::intersect(other, pb, point, moved, tol, &cache);
-        return point_first ? mink::intersect(sphere, moved, other, pb, tol, &cache)
-                           : mink::intersect(other, pb, sphere, moved, tol, &cache);
+        auto with = [&](const auto& p) {
+          return point_first ? mink::intersect(p, moved, other, pb, mink::Tolerances{}, &cache)
+                             : mink::intersect(other, pb, p, moved, mink::Tolerances{}, &cache);
+        };
+        if (bare) return with(bare_point);
+        return offset ? with(point) : with(sphere);
       };
       const Pose pa = offset ? pa_point : pa_sphere;
       if (warm) {
@@ -435,13 +444,31 @@ TEST(PointPolytope, BooleanAgainstClimbingHullsMatchesBruteForce) {
     };
     const mink::IntersectResult got = solid == 0   ? query(polytope)
                                       : solid == 1 ? query(hull)
-                                                   : query(rounded);
+                                      : solid == 2 ? query(rounded)
+                                                   : query(polytope);
+    if (solid == 3) {
+      EXPECT_EQ(polytope.face_planes(), nullptr) << "planes come after many more queries";
+    }
     ASSERT_EQ(got.error, nullptr);
     EXPECT_EQ(got.intersect, overlap);
     (overlap ? within : apart) += 1;
   }
   EXPECT_GT(apart, n / 5);
   EXPECT_GT(within, n / 5);
+}
+
+/// intersect() of a point core asks a small polytope for its planes once a query: the planes come
+/// after kPolytopePlanesAfterQueries such queries, as for distance() (the support plane's test
+/// once asked a second time, and the planes came after half as many).
+TEST(PointPolytope, IntersectCountsOneAskForThePlanes) {
+  const std::vector<Vec3> cube = {{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {1, 1, -1},
+                                  {-1, -1, 1},  {1, -1, 1},  {-1, 1, 1},  {1, 1, 1}};
+  const auto p = mink::Polytope::make(cube).value();
+  const Pose far = Pose::from_translation(Vec3(5, 0, 0));
+  for (std::uint32_t k = 0; k + 1 < mink::kPolytopePlanesAfterQueries; ++k)
+    EXPECT_FALSE(mink::intersect(mink::Sphere{0.5}, far, p, Pose::identity()).intersect);
+  EXPECT_EQ(p.face_planes(), nullptr);  // this call is the count's last
+  EXPECT_NE(p.face_planes(), nullptr);
 }
 
 }  // namespace point_polytope_test
