@@ -862,10 +862,11 @@ inline constexpr bool kPointCorePair = (PointCore<A>::value || PointCore<B>::val
 
 /// A point core against a core with no closed form (a polytope of 64 points or more, which
 /// climbs its hull; a hull; a sum): one support call of the other core, in its own frame, along
-/// the line from its centre (its origin when it names none) to the point. Its support plane is
-/// GJK's first and decides most such pairs apart (beyond()); it costs one rotation of the point
-/// into the other's frame, where GJK first builds the whole relative pose. When it does not
-/// decide, GJK starts from it (intersect.hpp), so the support call is not wasted.
+/// the line from its centre (its origin when it names none) to the point. Its support plane,
+/// like GJK's first (which GJK takes along the line of origins), decides most such pairs apart
+/// (beyond()); it costs one rotation of the point into the other's frame, where GJK first
+/// builds the whole relative pose. When it does not decide, GJK starts from it (intersect.hpp),
+/// so the support call is not wasted.
 template <class S>
 struct PointSupportPlane {
   Vec3T<S> point;    ///< the point core, in the other core's frame
