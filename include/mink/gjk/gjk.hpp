@@ -776,6 +776,28 @@ template <class S>
   return (pose.rotation.array() * S(0)).sum() + (pose.translation.array() * S(0)).sum() == S(0);
 }
 
+/// Whether the sum of every entry of both poses is finite: true when every entry is finite,
+/// except where the sum of finite entries overflows (translations near 1e308), which
+/// pose_finiteness_error() sorts out. A NaN stays NaN in a sum, an infinity stays infinite or
+/// meets the other sign's and makes NaN: one chain of additions, where testing each pose's
+/// entries took twice the instructions.
+template <class S>
+[[gnu::always_inline]] inline bool poses_sum_finite(const PoseT<S>& pose_a,
+                                                    const PoseT<S>& pose_b) {
+  const S sum = (pose_a.rotation.array() + pose_b.rotation.array()).sum() +
+                (pose_a.translation.array() + pose_b.translation.array()).sum();
+  return sum - sum == S(0);
+}
+
+/// Which pose is not finite, entry by entry, or nullptr (their entries' sum overflowed).
+template <class S>
+[[gnu::noinline, gnu::cold]] const char* pose_finiteness_error(const PoseT<S>& pose_a,
+                                                               const PoseT<S>& pose_b) {
+  if (!pose_is_finite(pose_a)) return "pose of A is not finite";
+  if (!pose_is_finite(pose_b)) return "pose of B is not finite";
+  return nullptr;
+}
+
 /// Why a query cannot run, or nullptr. Poses are checked for finiteness only: an orthonormal
 /// rotation is the caller's contract (pose_error() checks it in full, the JSON front end does).
 /// Always inlined: every query starts with it, and whether GCC inlines it otherwise changes with
@@ -786,8 +808,8 @@ template <ConvexShape A, ConvexShape B>
     const PoseT<typename A::Scalar>& pose_b) {
   if (const char* e = a.error()) return e;
   if (const char* e = b.error()) return e;
-  if (!pose_is_finite(pose_a)) return "pose of A is not finite";
-  if (!pose_is_finite(pose_b)) return "pose of B is not finite";
+  if (!poses_sum_finite(pose_a, pose_b)) [[unlikely]]
+    return pose_finiteness_error(pose_a, pose_b);
   return nullptr;
 }
 

@@ -87,6 +87,33 @@ TEST(GjkBadInput, NonFinitePoses) {
   }
 }
 
+// The poses are tested by one sum over both (gjk.hpp, query_input_error()): infinities of
+// either sign on either side make it non-finite, and so does a sum of finite entries that
+// overflows, which must not count as a pose that is not finite.
+TEST(GjkBadInput, PosesTestedByOneSum) {
+  const mink::Capsule capsule{0.5, 1.0};
+  Pose plus = Pose::identity(), minus = Pose::identity();
+  plus.translation.x() = kInf;
+  minus.rotation(2, 0) = -kInf;
+  const auto both = mink::distance(capsule, plus, capsule, minus);
+  EXPECT_EQ(both.status, mink::Status::InvalidInput);
+  ASSERT_NE(both.error, nullptr);
+  EXPECT_STREQ(both.error, "pose of A is not finite");
+  const auto only_b = mink::contact(capsule, Pose::identity(), capsule, minus);
+  EXPECT_EQ(only_b.status, mink::Status::InvalidInput);
+  ASSERT_NE(only_b.error, nullptr);
+  EXPECT_STREQ(only_b.error, "pose of B is not finite");
+  // Finite entries whose sum overflows: pairs near the largest double, apart and coincident.
+  const Pose far_a = Pose::from_translation(Vec3(1e308, 0, 0));
+  const Pose far_b = Pose::from_translation(Vec3(0.9e308, 0, 0));
+  const auto far = mink::distance(capsule, far_a, capsule, far_b);
+  EXPECT_EQ(far.status, mink::Status::Separated) << (far.error ? far.error : "");
+  EXPECT_NEAR(far.distance, 1e307, 1e295);
+  const auto same = mink::contact(capsule, far_a, capsule, far_a);
+  EXPECT_TRUE(same.intersect) << (same.error ? same.error : "");
+  EXPECT_TRUE(mink::intersect(capsule, far_a, capsule, far_a).intersect);
+}
+
 TEST(GjkBadInput, QuaternionAndPoseValidation) {
   EXPECT_EQ(mink::quaternion_error(mink::Quat(1, 0, 0, 0)), nullptr);
   EXPECT_EQ(mink::quaternion_error(mink::Quat(0.5, 0.5, 0.5, 0.5)), nullptr);
