@@ -286,10 +286,13 @@ template <class S>
 /// three quarters of random overlaps), where the axes would all be needed. Unsure in between, and
 /// also when an edge axis is nearly degenerate (edges parallel to 1e-6 but not exactly) and no
 /// point proved the overlap, where the theorem's axis cannot be trusted to rounding. This form
-/// computes the axes as it goes, for intersect().
+/// computes the axes as it goes, for intersect(), which is its only caller: always inlined there,
+/// so that the relative pose stays in registers instead of going to the call through memory
+/// (a separated box pair's boolean 18.0 -> 15.9 ns in a driver).
 template <class S>
-BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb, const Mat3T<S>& r,
-                              const Vec3T<S>& t, S gap) {
+[[gnu::always_inline]] inline BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb,
+                                                            const Mat3T<S>& r, const Vec3T<S>& t,
+                                                            S gap) {
   const AbsRotation<S> abs_r = abs_rotation(r);
   bool apart = false;  // some axis shows a gap > 0 (but not > `gap`)
   const Vec3T<S> face_a = box_face_overlaps_a(ha, hb, abs_r, t);
