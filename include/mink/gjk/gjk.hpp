@@ -777,7 +777,7 @@ template <class S>
 }
 
 /// Whether the sum of every entry of both poses is finite: true when every entry is finite,
-/// except where the sum of finite entries overflows (translations near 1e308), which
+/// except where the sum of finite entries overflows (translations near the largest S), which
 /// pose_finiteness_error() sorts out. A NaN stays NaN in a sum, an infinity stays infinite or
 /// meets the other sign's and makes NaN: one chain of additions, where testing each pose's
 /// entries took twice the instructions.
@@ -789,7 +789,8 @@ template <class S>
   return sum - sum == S(0);
 }
 
-/// Which pose is not finite, entry by entry, or nullptr (their entries' sum overflowed).
+/// Which pose is not finite (pose_is_finite() of each), or nullptr: both are, and the sum of
+/// their entries overflowed.
 template <class S>
 [[gnu::noinline, gnu::cold]] const char* pose_finiteness_error(const PoseT<S>& pose_a,
                                                                const PoseT<S>& pose_b) {

@@ -19,6 +19,12 @@
 #include "mink/shapes/sphere.hpp"
 #include "mink/support/rounded.hpp"
 
+#if defined(__clang__)
+#define MINK_SEGMENT_CORES_INLINE [[gnu::always_inline]] inline
+#else
+#define MINK_SEGMENT_CORES_INLINE inline
+#endif
+
 namespace mink::detail {
 
 /// A point or segment core in the world frame shifted to some origin: the points
@@ -132,9 +138,9 @@ inline constexpr S kHugeSegmentSq = power_of_two<S>(std::numeric_limits<S>::max_
 /// segment_parameters() on the pair scaled to its largest coordinate, for segments whose squared
 /// lengths underflow or overflow (see closest_points_of_segments()); out of line, as it is rare.
 template <class S>
-[[gnu::noinline]] SegmentParameters<S> segment_parameters_rescaled(const Vec3T<S>& hp,
-                                                                   const Vec3T<S>& hq,
-                                                                   const Vec3T<S>& w) {
+[[gnu::noinline, gnu::cold]] SegmentParameters<S> segment_parameters_rescaled(const Vec3T<S>& hp,
+                                                                              const Vec3T<S>& hq,
+                                                                              const Vec3T<S>& w) {
   // By a division, not a power of two: 2^1074, which a subnormal coordinate would need, overflows.
   const S largest =
       std::max({hp.cwiseAbs().maxCoeff(), hq.cwiseAbs().maxCoeff(), w.cwiseAbs().maxCoeff()});
@@ -266,11 +272,12 @@ template <class S>
 /// receives the direction from on_a to on_b when they differ (else it is left as it was): the
 /// plain quotient while the gap is more than 1e-3 of the segments' size and distance from A's
 /// origin (its rounding then tilts it by less than 3e-13 rad), segment_gap_direction()'s when the
-/// cores nearly meet. Always inlined, with u and v returned by value: out of line, its outputs
-/// and the parameters went through memory, a fifth of a capsule pair's distance query (34 -> 27
-/// ns in a driver, with query_input_error()'s one sum over the poses).
+/// cores nearly meet. Always inlined under Clang (segment_parameters() returns u and v by value
+/// for the same reason): out of line, Clang passed its outputs and the parameters through memory
+/// (a capsule pair's distance 31.6 -> 27.7 ns in a driver, both changes together). GCC kept them
+/// in registers out of line and ran 6 % slower inlined (27.6 -> 29.4 ns), so it decides itself.
 template <class A, class B>
-[[gnu::always_inline]] inline typename A::Scalar closest_core_points(
+MINK_SEGMENT_CORES_INLINE typename A::Scalar closest_core_points(
     const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     const PoseT<typename A::Scalar>& pose_b, Vec3T<typename A::Scalar>& on_a,
     Vec3T<typename A::Scalar>& on_b, Vec3T<typename A::Scalar>* unit = nullptr) {
@@ -300,3 +307,5 @@ template <class A, class B>
 }
 
 }  // namespace mink::detail
+
+#undef MINK_SEGMENT_CORES_INLINE
