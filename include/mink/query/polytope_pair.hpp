@@ -58,10 +58,14 @@ inline constexpr double kTransposeSlack = 4e-6;
 /// into `first`, and what it shows: Separated when its support plane passes the origin with room
 /// for `inside` (as enclose_origin() would decide on it), Intersecting when either of its two
 /// parts lies inside the other polytope, else Unsure (GJK goes on from `first`). A pair without
-/// face planes yet is never Intersecting here.
+/// face planes yet is never Intersecting here. Always inlined into intersect(), its only caller:
+/// out of line, the first point and its direction went back through memory, and Clang took
+/// 33.2 ns for a polytope8 pair apart against 25.5 ns inlined (GCC 34.0 -> 32.6 ns; overlapping
+/// pairs 55.7 -> 53.7 ns under Clang, 63.7 -> 65.2 ns under GCC).
 template <ConvexShape A, ConvexShape B>
-EncloseVerdict first_support_verdict(const CoreDifference<A, B>& diff, typename A::Scalar inside,
-                                     PointAndDirection<typename A::Scalar>& first) {
+[[gnu::always_inline]] inline EncloseVerdict first_support_verdict(
+    const CoreDifference<A, B>& diff, typename A::Scalar inside,
+    PointAndDirection<typename A::Scalar>& first) {
   using S = typename A::Scalar;
   const Vec3T<S> d = first_direction(diff);
   const Vec3T<S> on_a = diff.a.support_core(d);
