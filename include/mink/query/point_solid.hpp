@@ -824,7 +824,7 @@ struct CorePair {
 /// time, for callers that load it two at a time, which stalls on store forwarding (with the range
 /// check's and gap_verdict()'s packed reads, a third of a sphere-polytope test).
 template <class A, class B>
-[[gnu::always_inline]] inline Vec3T<typename A::Scalar> point_in_solid_frame(
+[[gnu::always_inline]] inline Vec3T<typename A::Scalar> point_in_other_frame(
     const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     const PoseT<typename A::Scalar>& pose_b) {
   if constexpr (PointCore<B>::value)
@@ -852,7 +852,7 @@ template <class A, class B>
 GapVerdict point_solid_verdict(const typename SolidOf<A, B>::Core& solid, const A& a,
                                const PoseT<typename A::Scalar>& pose_a, const B& b,
                                const PoseT<typename A::Scalar>& pose_b, typename A::Scalar reach) {
-  return SolidOf<A, B>::within_reach(solid, point_in_solid_frame(a, pose_a, b, pose_b), reach);
+  return SolidOf<A, B>::within_reach(solid, point_in_other_frame(a, pose_a, b, pose_b), reach);
 }
 
 /// A point core against any other core that is not a point or a segment (either order).
@@ -895,7 +895,7 @@ PointSupportPlane<typename A::Scalar> point_support_plane(const A& a,
   }
   ();
   PointSupportPlane<S> plane;
-  plane.point = point_in_solid_frame(a, pose_a, b, pose_b);
+  plane.point = point_in_other_frame(a, pose_a, b, pose_b);
   plane.d = plane.point;
   if constexpr (HasCoreCentre<std::remove_cvref_t<decltype(other)>>) plane.d -= other.core_centre();
   plane.d_sq = plane.d.squaredNorm();
@@ -915,7 +915,7 @@ std::optional<PointSolidLocal<typename A::Scalar>> point_solid_local(
     const PoseT<typename A::Scalar>& pose_b) {
   const auto* solid = solid_of(a, b);
   if (!solid) return std::nullopt;
-  return SolidOf<A, B>::local(*solid, point_in_solid_frame(a, pose_a, b, pose_b));
+  return SolidOf<A, B>::local(*solid, point_in_other_frame(a, pose_a, b, pose_b));
 }
 
 /// A CorePair from a point of the solid core, the other core's point and the solid's outward
