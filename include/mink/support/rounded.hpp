@@ -15,7 +15,11 @@ struct Rounded {
   T shape;
   Scalar margin = Scalar(0);  ///< (unit: length), finite and >= 0
 
-  Vec3T<Scalar> support_core(const Vec3T<Scalar>& d) const { return shape.support_core(d); }
+  /// Always inlined: a call of its own passed the direction and the point through memory (the
+  /// run-time Shape's cores are all Rounded).
+  [[gnu::always_inline]] Vec3T<Scalar> support_core(const Vec3T<Scalar>& d) const {
+    return shape.support_core(d);
+  }
   Vec3T<Scalar> core_centre() const requires HasCoreCentre<T> { return shape.core_centre(); }
   Scalar core_radius() const { return shape.core_radius() + margin; }
   Scalar bounding_radius() const { return shape.bounding_radius() + margin; }

@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "mink/mink.hpp"
@@ -464,6 +466,91 @@ TEST(PointPolytope, IntersectCountsOneAskForThePlanes) {
     EXPECT_FALSE(mink::intersect(mink::Sphere{0.5}, far, p, Pose::identity()).intersect);
   EXPECT_EQ(p.face_planes(), nullptr);  // this call is the count's last
   EXPECT_NE(p.face_planes(), nullptr);
+}
+
+/// Both answers field by field, to the bit: the Shape's and the typed query's.
+template <class Result>
+void expect_same_answer(const Result& shape, const Result& typed) {
+  EXPECT_EQ(shape.status, typed.status);
+  EXPECT_EQ(shape.intersect, typed.intersect);
+  EXPECT_EQ(shape.iterations, typed.iterations);
+  if constexpr (requires { typed.distance; }) {
+    EXPECT_EQ(shape.distance, typed.distance);
+    EXPECT_EQ(shape.normal, typed.normal);
+    EXPECT_EQ(shape.point_a, typed.point_a);
+    EXPECT_EQ(shape.point_b, typed.point_b);
+  }
+  if constexpr (requires { typed.depth; }) {
+    EXPECT_EQ(shape.depth, typed.depth);
+  }
+}
+
+/// The answer for B against A from the one for A against B.
+template <class Result>
+Result swapped(Result r) {
+  r.normal = -r.normal;
+  std::swap(r.point_a, r.point_b);
+  return r;
+}
+
+/// The run-time Shape (src/shape_dispatch.hpp) takes a small polytope's face planes as the typed
+/// Polytope does: a sphere, point or rounded point against it, and two polytopes in the yes/no
+/// test, get the typed queries' answers on the same cores (Rounded<Point>, Rounded<Polytope>),
+/// to the bit and with the same support calls, which are 0 where the planes answer. Before, the
+/// Shape's polytope had no planes to offer, and its queries ran GJK (twice the time).
+TEST(PointPolytope, ShapeTakesThePlanesAsTheTypedPolytope) {
+  const int n = oracle::sweep_count(600, 200);
+  int closed_forms = 0, first_supports = 0;
+  for (int i = 0; i < n; ++i) {
+    const std::uint64_t seed = 690000 + i;
+    SCOPED_TRACE(oracle::seed_note(seed));
+    Rng rng(seed);
+    const double scale = rng.log_uniform(0.05, 2);
+    const auto local = point_set(rng, rng.integer(0, kKinds - 1), scale);
+    const auto local_other = point_set(rng, rng.integer(0, kKinds - 1), scale);
+    const mink::Rounded<mink::Polytope> typed{mink::Polytope::make(local).value(), 0.0};
+    const mink::Rounded<mink::Polytope> typed_other{mink::Polytope::make(local_other).value(), 0.0};
+    const auto shape = mink::Shape::polytope(local).value();
+    const auto shape_other = mink::Shape::polytope(local_other).value();
+    const bool planes = typed.shape.build_face_planes() != nullptr;
+    const bool planes_other = typed_other.shape.build_face_planes() != nullptr;
+    EXPECT_EQ(std::get<mink::SharedPolytope>(shape.cores().front())->build_face_planes() != nullptr,
+              planes);
+    EXPECT_EQ(
+        std::get<mink::SharedPolytope>(shape_other.cores().front())->build_face_planes() != nullptr,
+        planes_other);
+
+    const double radius = rng.chance(0.2) ? 0.0 : scale * rng.log_uniform(1e-3, 1);
+    const mink::Rounded<mink::Point> typed_sphere{mink::Point{}, radius};
+    const auto sphere =
+        radius > 0 ? mink::Shape::sphere(radius).value() : mink::Shape::point(Vec3::Zero()).value();
+    const Pose pb = rng.pose(5);
+    const Pose pa = Pose::from(pb.apply(centre_near(rng, local, scale)), rng.rotation());
+    SCOPED_TRACE(testing::Message()
+                 << local.size() << " and " << local_other.size() << " points, planes " << planes
+                 << planes_other << ", radius " << radius);
+    // The sphere on either side: the Shape runs the pair in its cores' order (the point first)
+    // and swaps the answer back.
+    const auto typed_distance = mink::distance(typed_sphere, pa, typed, pb);
+    const auto typed_contact = mink::contact(typed_sphere, pa, typed, pb);
+    expect_same_answer(mink::distance(sphere, pa, shape, pb), typed_distance);
+    expect_same_answer(mink::distance(shape, pb, sphere, pa), swapped(typed_distance));
+    expect_same_answer(mink::contact(sphere, pa, shape, pb), typed_contact);
+    expect_same_answer(mink::contact(shape, pb, sphere, pa), swapped(typed_contact));
+    expect_same_answer(mink::intersect(shape, pb, sphere, pa),
+                       mink::intersect(typed_sphere, pa, typed, pb));
+    closed_forms += planes && typed_distance.iterations == 0;
+
+    // The second polytope about as far from the first as the sphere's centre.
+    const Pose po = Pose::from(pa.translation, rng.rotation());
+    const auto typed_pair = mink::intersect(typed, pb, typed_other, po);
+    expect_same_answer(mink::intersect(shape, pb, shape_other, po), typed_pair);
+    expect_same_answer(mink::contact(shape, pb, shape_other, po),
+                       mink::contact(typed, pb, typed_other, po));
+    first_supports += planes && planes_other && typed_pair.iterations == 1;
+  }
+  EXPECT_GT(closed_forms, n / 4);
+  EXPECT_GT(first_supports, n / 10);
 }
 
 }  // namespace point_polytope_test
