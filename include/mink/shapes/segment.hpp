@@ -2,6 +2,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "mink/shapes/shape_common.hpp"
 
@@ -18,7 +20,13 @@ struct SegmentT {
   Vec3T<S> support_core(const Vec3T<S>& d) const { return d.dot(b - a) > S(0) ? b : a; }
   Vec3T<S> core_centre() const { return S(0.5) * a + S(0.5) * b; }
   S core_radius() const { return S(0); }
-  S bounding_radius() const {  // at any magnitude (length_of())
+  /// The larger of |a| and |b|, at any magnitude: one square root, the larger square's, where it
+  /// is in range (the common case); else length_of() of each.
+  S bounding_radius() const {
+    const S larger = std::max(S(a.squaredNorm()), S(b.squaredNorm()));
+    if (larger >= std::numeric_limits<S>::min() && larger <= std::numeric_limits<S>::max())
+        [[likely]]
+      return std::sqrt(larger);
     return std::max(detail::length_of(a), detail::length_of(b));
   }
   const char* error() const {
