@@ -1,6 +1,7 @@
 set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/shapes/support_scan_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/math/lanes_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/math/least_index_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/math/lengths_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/shapes/support_mapping_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/shapes/core_centre_test.cpp
