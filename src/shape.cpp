@@ -35,9 +35,16 @@ const char* core_error(const Core& core) {
 
 /// Half of a segment symmetric about the origin (its end points b and -b): b, else nothing.
 std::optional<Vec3> symmetric_half(const Core& core) {
+  if (const auto* capsule = std::get_if<Capsule>(&core)) return Vec3(0, 0, capsule->half_height);
   const auto* segment = std::get_if<Segment>(&core);
   if (!segment || segment->a != -segment->b) return std::nullopt;
   return segment->b;
+}
+
+/// The segment from -b to b as a core: a Capsule core when it lies along z.
+Core symmetric_segment(const Vec3& b) {
+  if (b.x() == 0 && b.y() == 0) return Capsule{0, std::abs(b.z())};
+  return Segment{-b, b};
 }
 
 bool is_origin_point(const Core& core) {
@@ -72,7 +79,7 @@ bool fold_core(Core& into, const Core& part) {
   if (const std::optional<Vec3> own = symmetric_half(into)) {
     if (own->cross(*half) != Vec3::Zero()) return false;
     const Vec3 b = *own + (own->dot(*half) >= 0 ? *half : Vec3(-*half));
-    into = Segment{-b, b};
+    into = symmetric_segment(b);
     return true;
   }
   return false;
@@ -87,6 +94,8 @@ Expected<Core> scaled_core(const Core& core, double factor) {
           return Core{Point{factor * c.position}};
         } else if constexpr (std::is_same_v<T, Segment>) {
           return Core{Segment{factor * c.a, factor * c.b}};
+        } else if constexpr (std::is_same_v<T, Capsule>) {
+          return Core{Capsule{factor * c.radius, factor * c.half_height}};
         } else if constexpr (std::is_same_v<T, Triangle>) {
           return Core{Triangle{factor * c.a, factor * c.b, factor * c.c}};
         } else if constexpr (std::is_same_v<T, Box>) {
@@ -153,7 +162,7 @@ Expected<Shape> Shape::box(const Vec3& half_extents) {
 Expected<Shape> Shape::capsule(double radius, double half_height) {
   const Capsule c{radius, half_height};
   if (const char* e = c.error()) return Expected<Shape>::failure(e);
-  return from_core(Segment{Vec3(0, 0, -half_height), Vec3(0, 0, half_height)}, radius);
+  return from_core(Capsule{0, half_height}, radius);
 }
 
 Expected<Shape> Shape::cylinder(double radius, double half_height) {

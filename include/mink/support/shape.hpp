@@ -3,9 +3,9 @@
 ///
 /// A Shape is a Minkowski sum of primitive cores plus a radius, so every composition the JSON
 /// protocol allows (sums of sums, rounded sums, rounded spheres) flattens into one plain value:
-/// a sphere is a point core, a capsule a segment core, `rounded` adds to the radius and `sum`
-/// concatenates the cores and adds the radii. Queries on two Shapes dispatch once on the pair of
-/// core types and then run the same inlined template code as the static shapes.
+/// a sphere is a point core, a capsule its segment core (Capsule, radius 0), `rounded` adds to the
+/// radius and `sum` concatenates the cores and adds the radii. Queries on two Shapes dispatch once
+/// on the pair of core types and then run the same inlined template code as the static shapes.
 #pragma once
 
 #include <memory>
@@ -35,9 +35,13 @@ namespace mink {
 using SharedPolytope = std::shared_ptr<const Polytope>;
 using SharedHull = std::shared_ptr<const ConvexHullShape>;
 
-/// The primitive cores a Shape is made of. Every alternative has radius 0.
-using Core = std::variant<Point, Segment, Triangle, Box, Cylinder, Cone, Ellipsoid, SharedPolytope,
-                          SharedHull>;
+/// The primitive cores a Shape is made of. Every alternative has radius 0: a Capsule core is held
+/// with radius 0, as the segment along z of its half height, which is a capsule's core (the
+/// radius is the Shape's). A Segment would be the same set, but its queries rotate two end
+/// points and check six coordinates where a capsule's scale one column of the rotation: a capsule
+/// pair through a Shape took 20 ns for intersect() against the typed call's 8.
+using Core = std::variant<Point, Segment, Capsule, Triangle, Box, Cylinder, Cone, Ellipsoid,
+                          SharedPolytope, SharedHull>;
 
 namespace detail {
 template <class T>

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "mink/mink.hpp"
@@ -47,6 +48,10 @@ std::vector<SumCase> sum_cases() {
        Shape::segment(Vec3(0, 0, 0.9), Vec3(0, 0, -0.9)).value(), 1},
       {"segment + segment, oblique", Shape::segment(-oblique, oblique).value(),
        Shape::segment(2 * oblique, -2 * oblique).value(), 1},
+      {"capsule + capsule", Shape::capsule(0.2, 0.3).value(), Shape::capsule(0.1, 0.6).value(), 1},
+      {"capsule + segment along z", Shape::capsule(0.2, 0.3).value(),
+       Shape::segment(half_z, -half_z).value(), 1},
+      {"box + capsule", Shape::box(Vec3(1, 2, 3)).value(), Shape::capsule(0.2, 0.3).value(), 1},
       {"segment + sphere (a capsule)",
        Shape::segment(Vec3(-0.6, -0.2, 0), Vec3(0.5, -0.4, 0.1)).value(),
        Shape::sphere(0.08).value(), 1},
@@ -59,6 +64,8 @@ std::vector<SumCase> sum_cases() {
        Shape::segment(-oblique, oblique).value(), 2},
       {"cylinder + segment off the origin", Shape::cylinder(0.5, 0.8).value(),
        Shape::segment(Vec3(0, 0, 0.1), Vec3(0, 0, 0.5)).value(), 2},
+      {"capsule + segment along x", Shape::capsule(0.2, 0.3).value(),
+       Shape::segment(-half_x, half_x).value(), 2},
       {"box + point off the origin", Shape::box(Vec3(1, 2, 3)).value(),
        Shape::point(Vec3(0.1, 0, 0)).value(), 2},
   };
@@ -87,11 +94,39 @@ TEST(ShapeSum, FoldedSumsKeepTheSupportOfTheirParts) {
   }
 }
 
+// A capsule's core is a Capsule of radius 0 (the segment along z), which takes the typed capsule's
+// paths; segments along z that fold into it, or into each other, stay one.
+TEST(ShapeSum, SegmentsAlongZFoldIntoACapsuleCore) {
+  const Vec3 half_z(0, 0, 0.4);
+  const Shape capsule = Shape::capsule(0.2, 0.3).value();
+  ASSERT_EQ(capsule.cores().size(), 1u);
+  EXPECT_TRUE(std::holds_alternative<mink::Capsule>(capsule.cores()[0]));
+  const Shape sums[] = {
+      Shape::sum(capsule, Shape::capsule(0.1, 0.6).value()).value(),
+      Shape::sum(Shape::segment(half_z, -half_z).value(), capsule).value(),
+      Shape::sum(Shape::segment(half_z, -half_z).value(), Shape::segment(-half_z, half_z).value())
+          .value()};
+  const double half_heights[] = {0.9, 0.7, 0.8};
+  for (int i = 0; i < 3; ++i) {
+    SCOPED_TRACE(i);
+    ASSERT_EQ(sums[i].cores().size(), 1u);
+    const auto* core = std::get_if<mink::Capsule>(&sums[i].cores()[0]);
+    ASSERT_NE(core, nullptr);
+    EXPECT_EQ(core->radius, 0);
+    EXPECT_NEAR(core->half_height, half_heights[i], 1e-15);
+  }
+}
+
 TEST(ShapeSum, LengthsThatWouldOverflowStaySeparateCores) {
   const Shape sum = Shape::sum(Shape::cylinder(1, 1e308).value(),
                                Shape::segment(Vec3(0, 0, -1.7e308), Vec3(0, 0, 1.7e308)).value())
                         .value();
   EXPECT_EQ(sum.cores().size(), 2u);
+  const Shape capsules =
+      Shape::sum(Shape::capsule(1, 1e308).value(),
+                 Shape::segment(Vec3(0, 0, -1.7e308), Vec3(0, 0, 1.7e308)).value())
+          .value();
+  EXPECT_EQ(capsules.cores().size(), 2u);
 }
 
 /// A sum against a copy of itself at the same pose: the depth is the least width, 2 min h(n)
