@@ -48,6 +48,7 @@ Core symmetric_segment(const Vec3& b) {
 }
 
 bool is_origin_point(const Core& core) {
+  if (const auto* sphere = std::get_if<Sphere>(&core)) return sphere->radius == 0;
   const auto* point = std::get_if<Point>(&core);
   return point && point->position == Vec3::Zero();
 }
@@ -92,6 +93,8 @@ Expected<Core> scaled_core(const Core& core, double factor) {
         using T = std::decay_t<decltype(c)>;
         if constexpr (std::is_same_v<T, Point>) {
           return Core{Point{factor * c.position}};
+        } else if constexpr (std::is_same_v<T, Sphere>) {
+          return Core{Sphere{factor * c.radius}};
         } else if constexpr (std::is_same_v<T, Segment>) {
           return Core{Segment{factor * c.a, factor * c.b}};
         } else if constexpr (std::is_same_v<T, Capsule>) {
@@ -152,7 +155,7 @@ Expected<Shape> Shape::from_core(Core core, double radius) {
 
 Expected<Shape> Shape::sphere(double radius) {
   if (const char* e = Sphere{radius}.error()) return Expected<Shape>::failure(e);
-  return from_core(Point{}, radius);
+  return from_core(Sphere{0}, radius);
 }
 
 Expected<Shape> Shape::box(const Vec3& half_extents) {
@@ -174,12 +177,12 @@ Expected<Shape> Shape::cone(double radius, double half_height) {
 }
 
 Expected<Shape> Shape::ellipsoid(const Vec3& radii) {
-  // Three equal radii make a sphere: a point core and a radius, so that queries take the exact
+  // Three equal radii make a sphere: its centre and a radius, so that queries take the exact
   // sphere paths. On its curved surface, EPA ran into its cap on near-concentric pairs (a sphere
   // 1e-6 off a capsule's axis: the normal 40 degrees off, the depth 5e-8 of the size).
   const Ellipsoid ellipsoid{radii};
   if (const char* e = ellipsoid.error()) return Expected<Shape>::failure(e);
-  if (radii.x() == radii.y() && radii.y() == radii.z()) return from_core(Point{}, radii.x());
+  if (radii.x() == radii.y() && radii.y() == radii.z()) return from_core(Sphere{0}, radii.x());
   return from_core(ellipsoid, 0);
 }
 

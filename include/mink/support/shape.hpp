@@ -3,9 +3,10 @@
 ///
 /// A Shape is a Minkowski sum of primitive cores plus a radius, so every composition the JSON
 /// protocol allows (sums of sums, rounded sums, rounded spheres) flattens into one plain value:
-/// a sphere is a point core, a capsule its segment core (Capsule, radius 0), `rounded` adds to the
-/// radius and `sum` concatenates the cores and adds the radii. Queries on two Shapes dispatch once
-/// on the pair of core types and then run the same inlined template code as the static shapes.
+/// a sphere is its centre (a Sphere core of radius 0), a capsule its segment (a Capsule core of
+/// radius 0), `rounded` adds to the radius and `sum` concatenates the cores and adds the radii.
+/// Queries on two Shapes dispatch once on the pair of core types and then run the same inlined
+/// template code as the static shapes.
 #pragma once
 
 #include <memory>
@@ -35,12 +36,13 @@ namespace mink {
 using SharedPolytope = std::shared_ptr<const Polytope>;
 using SharedHull = std::shared_ptr<const ConvexHullShape>;
 
-/// The primitive cores a Shape is made of. Every alternative has radius 0: a Capsule core is held
-/// with radius 0, as the segment along z of its half height, which is a capsule's core (the
-/// radius is the Shape's). A Segment would be the same set, but its queries rotate two end
-/// points and check six coordinates where a capsule's scale one column of the rotation: a capsule
-/// pair through a Shape took 20 ns for intersect() against the typed call's 8.
-using Core = std::variant<Point, Segment, Capsule, Triangle, Box, Cylinder, Cone, Ellipsoid,
+/// The primitive cores a Shape is made of. Every alternative has radius 0: a sphere's core is held
+/// as a Sphere of radius 0 (the origin) and a capsule's as a Capsule of radius 0 (the segment
+/// along z of its half height); the radius is the Shape's. A Point or a Segment would be the same
+/// set, but their queries rotate the point or both end points and check their coordinates, where a
+/// sphere's take the pose's translation and a capsule's scale one column of the rotation: a
+/// capsule pair through a Shape took 20 ns for intersect() against the typed call's 8.
+using Core = std::variant<Point, Sphere, Segment, Capsule, Triangle, Box, Cylinder, Cone, Ellipsoid,
                           SharedPolytope, SharedHull>;
 
 namespace detail {
@@ -59,7 +61,8 @@ class Shape {
   static Expected<Shape> capsule(double radius, double half_height);
   static Expected<Shape> cylinder(double radius, double half_height);
   static Expected<Shape> cone(double radius, double half_height);
-  /// Three equal radii give a sphere: a point core with that radius, as sphere() builds it.
+  /// Three equal radii give a sphere: its centre as the core, with that radius, as sphere() builds
+  /// it.
   static Expected<Shape> ellipsoid(const Vec3& radii);
   static Expected<Shape> point(const Vec3& p);
   static Expected<Shape> segment(const Vec3& a, const Vec3& b);

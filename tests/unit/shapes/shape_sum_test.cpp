@@ -94,13 +94,22 @@ TEST(ShapeSum, FoldedSumsKeepTheSupportOfTheirParts) {
   }
 }
 
-// A capsule's core is a Capsule of radius 0 (the segment along z), which takes the typed capsule's
-// paths; segments along z that fold into it, or into each other, stay one.
-TEST(ShapeSum, SegmentsAlongZFoldIntoACapsuleCore) {
+// A sphere's core is a Sphere of radius 0 (its centre) and a capsule's a Capsule of radius 0 (the
+// segment along z), which take the typed shapes' paths; a sum keeps them, and segments along z
+// that fold into a capsule's core, or into each other, make one.
+TEST(ShapeSum, SpheresAndSegmentsAlongZKeepTheTypedCores) {
   const Vec3 half_z(0, 0, 0.4);
   const Shape capsule = Shape::capsule(0.2, 0.3).value();
   ASSERT_EQ(capsule.cores().size(), 1u);
   EXPECT_TRUE(std::holds_alternative<mink::Capsule>(capsule.cores()[0]));
+  for (const Shape& sphere :
+       {Shape::sphere(0.5).value(), Shape::ellipsoid(Vec3(0.5, 0.5, 0.5)).value(),
+        Shape::sum(Shape::sphere(0.5).value(), Shape::sphere(0.25).value()).value()}) {
+    ASSERT_EQ(sphere.cores().size(), 1u);
+    const auto* core = std::get_if<mink::Sphere>(&sphere.cores()[0]);
+    ASSERT_NE(core, nullptr);
+    EXPECT_EQ(core->radius, 0);
+  }
   const Shape sums[] = {
       Shape::sum(capsule, Shape::capsule(0.1, 0.6).value()).value(),
       Shape::sum(Shape::segment(half_z, -half_z).value(), capsule).value(),
