@@ -129,7 +129,7 @@ inline void swap_sides(ManifoldResult& r) {
 /// error (the result's status stays InvalidInput). A pair whose core types come in the
 /// other order than in Core runs as (b, a) and its answer is swapped back, so that each unordered
 /// pair of core types compiles once: the library's instantiations, most of its build time, fall
-/// from 81 pairs per query to 45. It also makes swapping A and B flip the answer exactly when the
+/// from 121 pairs per query to 66. It also makes swapping A and B flip the answer exactly when the
 /// core types differ (cores of one type, and sums, run in the caller's order). A GjkCache
 /// therefore holds the directions of such a pair in Core's order, whichever order the caller
 /// passes.
