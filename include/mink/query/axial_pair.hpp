@@ -83,9 +83,14 @@ template <class S>
 struct AxialCore<ConeT<S>> : std::true_type {
   static CoreAxis<S> of(const ConeT<S>&) { return {AxisKind::Line}; }
 };
+/// A capsule of no length is a sphere, symmetric about every line through its centre, as a
+/// segment of no length is a point: as a line, a sphere's centre 1e-6 off a cylinder's axis ran
+/// EPA to its cap (2,103 support calls, the depth 3.6e-7 short).
 template <class S>
 struct AxialCore<CapsuleT<S>> : std::true_type {
-  static CoreAxis<S> of(const CapsuleT<S>&) { return {AxisKind::Line}; }
+  static CoreAxis<S> of(const CapsuleT<S>& c) {
+    return {c.half_height == S(0) ? AxisKind::Any : AxisKind::Line};
+  }
 };
 template <class S>
 struct AxialCore<SphereT<S>> : std::true_type {

@@ -37,9 +37,11 @@
 #include "mink/gjk/signed_volumes.hpp"
 #include "mink/query/box_box.hpp"
 #include "mink/shapes/box.hpp"
+#include "mink/shapes/capsule.hpp"
 #include "mink/shapes/point.hpp"
 #include "mink/shapes/polytope.hpp"
 #include "mink/shapes/segment.hpp"
+#include "mink/shapes/sphere.hpp"
 #include "mink/shapes/triangle.hpp"
 #include "mink/support/rounded.hpp"
 
@@ -90,6 +92,26 @@ struct PointSetCore<SegmentT<S>> : std::true_type {
   static int points(const SegmentT<S>& s, Vec3T<S>* out) {
     out[0] = s.a;
     out[1] = s.b;
+    return 2;
+  }
+};
+
+/// A sphere's core, its centre, and a capsule's, the ends of its segment along z: the point sets
+/// of a point and a segment. Without them a Shape's sphere or capsule (which holds these cores)
+/// beside a needle triangle ended at GJK's cap where a rounded point or segment did not.
+template <class S>
+struct PointSetCore<SphereT<S>> : std::true_type {
+  static int points(const SphereT<S>&, Vec3T<S>* out) {
+    out[0] = Vec3T<S>::Zero();
+    return 1;
+  }
+};
+
+template <class S>
+struct PointSetCore<CapsuleT<S>> : std::true_type {
+  static int points(const CapsuleT<S>& c, Vec3T<S>* out) {
+    out[0] = {S(0), S(0), -c.half_height};
+    out[1] = {S(0), S(0), c.half_height};
     return 2;
   }
 };
@@ -231,13 +253,18 @@ template <class A, class B>
 inline constexpr bool kPointSetPair =
     PointSetCore<A>::value&& PointSetCore<B>::value && !kSegmentCores<A, B>;
 
-/// Cores of at most three points: points, segments, triangles (and their rounded versions).
+/// Cores of at most three points: points, segments, triangles, spheres' and capsules' cores (and
+/// their rounded versions).
 template <class T>
 struct FewPointsCore : std::false_type {};
 template <class S>
 struct FewPointsCore<PointT<S>> : std::true_type {};
 template <class S>
+struct FewPointsCore<SphereT<S>> : std::true_type {};
+template <class S>
 struct FewPointsCore<SegmentT<S>> : std::true_type {};
+template <class S>
+struct FewPointsCore<CapsuleT<S>> : std::true_type {};
 template <class S>
 struct FewPointsCore<TriangleT<S>> : std::true_type {};
 template <class T>

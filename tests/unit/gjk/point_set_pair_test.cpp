@@ -119,23 +119,24 @@ void expect_exact(const Scene& s, bool swapped, double signed_value, const Vec3&
   EXPECT_LE((point_b - point_a - signed_value * normal).norm(), bar);
 }
 
+// `pose_a` places A (whose world points are s.a); B stays at the origin.
 template <class A, class B>
-void check_pair(const Scene& s, const A& a, const B& b) {
+void check_pair(const Scene& s, const A& a, const B& b, const Pose& pose_a = Pose{}) {
   for (const bool swapped : {false, true}) {
     SCOPED_TRACE(swapped ? "B, A" : "A, B");
     const auto c =
-        swapped ? mink::contact(b, Pose{}, a, Pose{}) : mink::contact(a, Pose{}, b, Pose{});
+        swapped ? mink::contact(b, Pose{}, a, pose_a) : mink::contact(a, pose_a, b, Pose{});
     ASSERT_TRUE(c.status == mink::Status::Separated || c.status == mink::Status::Intersecting)
         << oracle::describe(c);
     expect_exact(s, swapped, c.intersect ? -c.depth : c.distance, c.normal, c.point_a, c.point_b);
     const auto d =
-        swapped ? mink::distance(b, Pose{}, a, Pose{}) : mink::distance(a, Pose{}, b, Pose{});
+        swapped ? mink::distance(b, Pose{}, a, pose_a) : mink::distance(a, pose_a, b, Pose{});
     ASSERT_TRUE(d.status == mink::Status::Separated || d.status == mink::Status::Intersecting);
     // Touching and intersecting pairs answer the flag alone; apart, everything.
     if (!d.intersect) expect_exact(s, swapped, d.distance, d.normal, d.point_a, d.point_b);
     EXPECT_EQ(d.intersect, c.intersect);
     const auto i =
-        swapped ? mink::intersect(b, Pose{}, a, Pose{}) : mink::intersect(a, Pose{}, b, Pose{});
+        swapped ? mink::intersect(b, Pose{}, a, pose_a) : mink::intersect(a, pose_a, b, Pose{});
     EXPECT_NE(i.status, mink::Status::IterationLimit);
     EXPECT_EQ(i.intersect, c.intersect);
   }
@@ -163,6 +164,75 @@ TEST(PointSetPair, SegmentBesideNeedleTriangleNearlyParallel) {
     s.radius = 1e-3 * s.size;
     check_pair(s, mink::Rounded<mink::Segment>{a, s.radius},
                mink::Rounded<mink::Triangle>{b, s.radius});
+  }
+}
+
+// The same scenes with A a capsule (its core the segment), typed and as a Shape, which holds a
+// Capsule core: without the point sets of a capsule's core, 137 of these 1,500 ended at GJK's
+// cap as Shapes (a rounded segment: none).
+TEST(PointSetPair, CapsuleBesideNeedleTriangleNearlyParallel) {
+  oracle::Rng rng(6601);
+  for (int n = 0; n < 1500; ++n) {
+    Scene s = make_scene(rng, false);
+    (void)rng.chance(0.3);  // as above: the same scenes
+    SCOPED_TRACE(testing::Message() << "case " << n << ", offset " << s.offset);
+    s.radius = 1e-3 * s.size;
+    const Vec3 along = s.a[1] - s.a[0];
+    Pose pose;
+    pose.translation = 0.5 * (s.a[0] + s.a[1]);
+    pose.rotation =
+        Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), along).normalized().toRotationMatrix();
+    // The capsule's ends, as the pose places them, are the scene's A.
+    s.a = {pose.translation - 0.5 * along.norm() * pose.rotation.col(2),
+           pose.translation + 0.5 * along.norm() * pose.rotation.col(2)};
+    const mink::Rounded<mink::Triangle> b{{s.b[0], s.b[1], s.b[2]}, s.radius};
+    if (n % 2 == 0) {
+      check_pair(s, mink::Capsule{s.radius, 0.5 * along.norm()}, b, pose);
+    } else {
+      check_pair(
+          s, mink::Shape::capsule(s.radius, 0.5 * along.norm()).value(),
+          mink::Shape::rounded(mink::Shape::triangle(s.b[0], s.b[1], s.b[2]).value(), s.radius)
+              .value(),
+          pose);
+    }
+  }
+}
+
+// A sphere whose centre lies `offset` off a needle triangle's plane, its shadow inside the
+// triangle near the long edge: the distance is |offset| less the radius. Typed and as a Shape
+// (a Sphere core): as a Shape, 192 of 3,000 ended at GJK's cap before a sphere's core had its
+// point set (a rounded point: none).
+TEST(PointSetPair, SphereOverNeedleTriangle) {
+  oracle::Rng rng(777);
+  for (int n = 0; n < 3000; ++n) {
+    const Mat3 frame = rng.rotation().toRotationMatrix();
+    const Vec3 u = frame.col(0), w = frame.col(1), v = frame.col(2);
+    const double scale = rng.log_uniform(0.1, 10);
+    const double half = scale * rng.uniform(0.3, 1);
+    const Vec3 centre = rng.in_ball(scale);
+    const double width = scale * rng.log_uniform(1e-12, 1e-3);
+    const double offsets[] = {0, 1e-14, 1e-12, 1e-10, 1e-8};
+    double offset = offsets[rng.integer(0, 4)] * scale;
+    if (rng.chance(0.5)) offset = -offset;
+    Scene s;
+    s.offset = offset;
+    s.size = 2 * (centre.norm() + 2 * scale);
+    s.radius = 1e-3 * s.size;
+    Pose pose;
+    pose.translation = centre + rng.uniform(-0.5, 0.5) * half * u + 0.01 * width * w + offset * v;
+    s.a = {pose.translation};
+    s.b = {centre - half * u, centre + half * u, centre + width * w};
+    SCOPED_TRACE(testing::Message() << "case " << n << ", offset " << offset);
+    const mink::Rounded<mink::Triangle> b{{s.b[0], s.b[1], s.b[2]}, s.radius};
+    if (n % 2 == 0) {
+      check_pair(s, mink::Sphere{s.radius}, b, pose);
+    } else {
+      check_pair(
+          s, mink::Shape::sphere(s.radius).value(),
+          mink::Shape::rounded(mink::Shape::triangle(s.b[0], s.b[1], s.b[2]).value(), s.radius)
+              .value(),
+          pose);
+    }
   }
 }
 
