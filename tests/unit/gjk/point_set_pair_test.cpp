@@ -167,6 +167,20 @@ TEST(PointSetPair, SegmentBesideNeedleTriangleNearlyParallel) {
   }
 }
 
+// check_pair() of A at `pose` against the scene's triangle B rounded by s.radius: both typed, or
+// both as Shapes (`typed` picks).
+template <class A>
+void check_against_triangle(const Scene& s, const Pose& pose, bool typed, const A& typed_a,
+                            const mink::Shape& shape_a) {
+  const mink::Triangle b{s.b[0], s.b[1], s.b[2]};
+  if (typed)
+    check_pair(s, typed_a, mink::Rounded<mink::Triangle>{b, s.radius}, pose);
+  else
+    check_pair(s, shape_a,
+               mink::Shape::rounded(mink::Shape::triangle(b.a, b.b, b.c).value(), s.radius).value(),
+               pose);
+}
+
 // The same scenes with A a capsule (its core the segment), typed and as a Shape, which holds a
 // Capsule core: without the point sets of a capsule's core, 137 of these 1,500 ended at GJK's
 // cap as Shapes (a rounded segment: none).
@@ -185,16 +199,9 @@ TEST(PointSetPair, CapsuleBesideNeedleTriangleNearlyParallel) {
     // The capsule's ends, as the pose places them, are the scene's A.
     s.a = {pose.translation - 0.5 * along.norm() * pose.rotation.col(2),
            pose.translation + 0.5 * along.norm() * pose.rotation.col(2)};
-    const mink::Rounded<mink::Triangle> b{{s.b[0], s.b[1], s.b[2]}, s.radius};
-    if (n % 2 == 0) {
-      check_pair(s, mink::Capsule{s.radius, 0.5 * along.norm()}, b, pose);
-    } else {
-      check_pair(
-          s, mink::Shape::capsule(s.radius, 0.5 * along.norm()).value(),
-          mink::Shape::rounded(mink::Shape::triangle(s.b[0], s.b[1], s.b[2]).value(), s.radius)
-              .value(),
-          pose);
-    }
+    const double half = 0.5 * along.norm();
+    check_against_triangle(s, pose, n % 2 == 0, mink::Capsule{s.radius, half},
+                           mink::Shape::capsule(s.radius, half).value());
   }
 }
 
@@ -223,16 +230,8 @@ TEST(PointSetPair, SphereOverNeedleTriangle) {
     s.a = {pose.translation};
     s.b = {centre - half * u, centre + half * u, centre + width * w};
     SCOPED_TRACE(testing::Message() << "case " << n << ", offset " << offset);
-    const mink::Rounded<mink::Triangle> b{{s.b[0], s.b[1], s.b[2]}, s.radius};
-    if (n % 2 == 0) {
-      check_pair(s, mink::Sphere{s.radius}, b, pose);
-    } else {
-      check_pair(
-          s, mink::Shape::sphere(s.radius).value(),
-          mink::Shape::rounded(mink::Shape::triangle(s.b[0], s.b[1], s.b[2]).value(), s.radius)
-              .value(),
-          pose);
-    }
+    check_against_triangle(s, pose, n % 2 == 0, mink::Sphere{s.radius},
+                           mink::Shape::sphere(s.radius).value());
   }
 }
 
