@@ -68,6 +68,13 @@ struct Scene {
   double size = 0;
 };
 
+// A signed offset: `scale` times 0, 1e-14, 1e-12, 1e-10 or 1e-8, either way.
+double draw_offset(oracle::Rng& rng, double scale) {
+  const double offsets[] = {0, 1e-14, 1e-12, 1e-10, 1e-8};
+  const double offset = offsets[rng.integer(0, 4)] * scale;
+  return rng.chance(0.5) ? -offset : offset;
+}
+
 // Seen along v, A runs along u through `centre` and B along a direction `tilt` from u, through
 // a point of A; each is a segment or a needle (its copy moved within the plane by `width`).
 Scene make_scene(oracle::Rng& rng, bool needles) {
@@ -75,9 +82,7 @@ Scene make_scene(oracle::Rng& rng, bool needles) {
   const Vec3 u = frame.col(0), w = frame.col(1), v = frame.col(2);
   const double scale = rng.log_uniform(0.1, 10);
   const double tilt = rng.log_uniform(1e-13, 1e-7);
-  const double offsets[] = {0, 1e-14, 1e-12, 1e-10, 1e-8};
-  double offset = offsets[rng.integer(0, 4)] * scale;
-  if (rng.chance(0.5)) offset = -offset;
+  const double offset = draw_offset(rng, scale);
   const double half_a = scale * rng.uniform(0.3, 1);
   const double half_b = scale * rng.uniform(0.3, 1);
   const Vec3 centre = rng.in_ball(scale);
@@ -192,14 +197,14 @@ TEST(PointSetPair, CapsuleBesideNeedleTriangleNearlyParallel) {
     SCOPED_TRACE(testing::Message() << "case " << n << ", offset " << s.offset);
     s.radius = 1e-3 * s.size;
     const Vec3 along = s.a[1] - s.a[0];
+    const double half = 0.5 * along.norm();
     Pose pose;
     pose.translation = 0.5 * (s.a[0] + s.a[1]);
     pose.rotation =
         Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), along).normalized().toRotationMatrix();
     // The capsule's ends, as the pose places them, are the scene's A.
-    s.a = {pose.translation - 0.5 * along.norm() * pose.rotation.col(2),
-           pose.translation + 0.5 * along.norm() * pose.rotation.col(2)};
-    const double half = 0.5 * along.norm();
+    s.a = {pose.translation - half * pose.rotation.col(2),
+           pose.translation + half * pose.rotation.col(2)};
     check_against_triangle(s, pose, n % 2 == 0, mink::Capsule{s.radius, half},
                            mink::Shape::capsule(s.radius, half).value());
   }
@@ -218,9 +223,7 @@ TEST(PointSetPair, SphereOverNeedleTriangle) {
     const double half = scale * rng.uniform(0.3, 1);
     const Vec3 centre = rng.in_ball(scale);
     const double width = scale * rng.log_uniform(1e-12, 1e-3);
-    const double offsets[] = {0, 1e-14, 1e-12, 1e-10, 1e-8};
-    double offset = offsets[rng.integer(0, 4)] * scale;
-    if (rng.chance(0.5)) offset = -offset;
+    const double offset = draw_offset(rng, scale);
     Scene s;
     s.offset = offset;
     s.size = 2 * (centre.norm() + 2 * scale);
@@ -277,9 +280,7 @@ TEST(PointSetPair, SetNearlyParallelToABoxFace) {
     const double scale = rng.log_uniform(0.1, 10);
     const Vec3 half(scale * rng.uniform(0.2, 1), scale * rng.uniform(0.2, 1),
                     scale * rng.uniform(0.2, 1));
-    const double offsets[] = {0, 1e-14, 1e-12, 1e-10, 1e-8};
-    double offset = offsets[rng.integer(0, 4)] * scale;
-    if (rng.chance(0.5)) offset = -offset;
+    const double offset = draw_offset(rng, scale);
     const double tilt = rng.log_uniform(3e-10, 3e-7);
     const int corners = rng.chance(0.5) ? 2 : 3;
     // The corners' shadows, and their heights: the first lowest, the others up the tilt.
