@@ -41,16 +41,35 @@ std::optional<Vec3> symmetric_half(const Core& core) {
   return segment->b;
 }
 
-/// The segment from -b to b as a core: a Capsule core when it lies along z.
+/// The segment from -b to b as a core: a Capsule core when it lies along z (a Sphere core when it
+/// has no length).
 Core symmetric_segment(const Vec3& b) {
-  if (b.x() == 0 && b.y() == 0) return Capsule{0, std::abs(b.z())};
+  if (b.x() == 0 && b.y() == 0) {
+    if (b.z() == 0) return Sphere{0};
+    return Capsule{0, std::abs(b.z())};
+  }
   return Segment{-b, b};
 }
 
+/// A Shape's point at the origin: its cores are canonical_core()'s, so a Sphere of radius 0.
 bool is_origin_point(const Core& core) {
-  if (const auto* sphere = std::get_if<Sphere>(&core)) return sphere->radius == 0;
-  const auto* point = std::get_if<Point>(&core);
-  return point && point->position == Vec3::Zero();
+  const auto* sphere = std::get_if<Sphere>(&core);
+  return sphere && sphere->radius == 0;
+}
+
+/// The form of `core` with the fastest paths, the same set of points: a point at the origin (or a
+/// capsule's core of no length) is a Sphere core and a segment symmetric about the origin along z
+/// a Capsule core, as Shape::sphere() and Shape::capsule() make them (the typed closed forms and
+/// axial paths, where a Point or Segment core is rotated and checked coordinate by coordinate).
+Core canonical_core(Core core) {
+  if (const auto* capsule = std::get_if<Capsule>(&core);
+      capsule && capsule->radius == 0 && capsule->half_height == 0)
+    return Sphere{0};
+  if (const auto* point = std::get_if<Point>(&core); point && point->position == Vec3::Zero())
+    return Sphere{0};
+  if (const auto* segment = std::get_if<Segment>(&core); segment && segment->a == -segment->b)
+    return symmetric_segment(segment->b);
+  return core;
 }
 
 /// Folds `part` into `into` when their sum is again one core of a kind Core holds, exactly (to
@@ -134,7 +153,7 @@ Expected<Shape> Shape::scaled(double factor) const {
     auto c = scaled_core(core, factor);
     if (!c) return Expected<Shape>::failure(c.error());
     if (const char* e = core_error(c.value())) return Expected<Shape>::failure(e);
-    s.cores_.push_back(std::move(c).value());
+    s.cores_.push_back(canonical_core(std::move(c).value()));
   }
   s.bounding_radius_ = bounding_radius_of(s.cores_, s.radius_);
   if (!std::isfinite(s.radius_) || !std::isfinite(s.bounding_radius_))
@@ -147,7 +166,7 @@ Expected<Shape> Shape::from_core(Core core, double radius) {
   if (!std::isfinite(radius) || radius < 0)
     return Expected<Shape>::failure("radius must be finite and >= 0");
   Shape s;
-  s.cores_.push_back(std::move(core));
+  s.cores_.push_back(canonical_core(std::move(core)));
   s.radius_ = radius;
   s.bounding_radius_ = bounding_radius_of(s.cores_, radius);
   return s;

@@ -104,7 +104,9 @@ TEST(ShapeSum, SpheresAndSegmentsAlongZKeepTheTypedCores) {
   EXPECT_TRUE(std::holds_alternative<mink::Capsule>(capsule.cores()[0]));
   for (const Shape& sphere :
        {Shape::sphere(0.5).value(), Shape::ellipsoid(Vec3(0.5, 0.5, 0.5)).value(),
-        Shape::sum(Shape::sphere(0.5).value(), Shape::sphere(0.25).value()).value()}) {
+        Shape::sum(Shape::sphere(0.5).value(), Shape::sphere(0.25).value()).value(),
+        Shape::point(Vec3::Zero()).value(), Shape::capsule(0.5, 0).value(),
+        Shape::segment(Vec3::Zero(), Vec3::Zero()).value()}) {
     ASSERT_EQ(sphere.cores().size(), 1u);
     const auto* core = std::get_if<mink::Sphere>(&sphere.cores()[0]);
     ASSERT_NE(core, nullptr);
@@ -114,9 +116,13 @@ TEST(ShapeSum, SpheresAndSegmentsAlongZKeepTheTypedCores) {
       Shape::sum(capsule, Shape::capsule(0.1, 0.6).value()).value(),
       Shape::sum(Shape::segment(half_z, -half_z).value(), capsule).value(),
       Shape::sum(Shape::segment(half_z, -half_z).value(), Shape::segment(-half_z, half_z).value())
-          .value()};
-  const double half_heights[] = {0.9, 0.7, 0.8};
-  for (int i = 0; i < 3; ++i) {
+          .value(),
+      Shape::segment(half_z, -half_z).value(),
+      Shape::sum(Shape::point(Vec3::Zero()).value(), Shape::segment(-half_z, half_z).value())
+          .value(),
+      Shape::segment(-half_z, half_z).value().scaled(2).value()};
+  const double half_heights[] = {0.9, 0.7, 0.8, 0.4, 0.4, 0.8};
+  for (int i = 0; i < 6; ++i) {
     SCOPED_TRACE(i);
     ASSERT_EQ(sums[i].cores().size(), 1u);
     const auto* core = std::get_if<mink::Capsule>(&sums[i].cores()[0]);
@@ -124,6 +130,13 @@ TEST(ShapeSum, SpheresAndSegmentsAlongZKeepTheTypedCores) {
     EXPECT_EQ(core->radius, 0);
     EXPECT_NEAR(core->half_height, half_heights[i], 1e-15);
   }
+  // Points off the origin and segments off z keep their cores.
+  EXPECT_TRUE(std::holds_alternative<mink::Point>(Shape::point(half_z).value().cores()[0]));
+  const Vec3 tilted(0.1, 0, 0.4);
+  EXPECT_TRUE(
+      std::holds_alternative<mink::Segment>(Shape::segment(-tilted, tilted).value().cores()[0]));
+  EXPECT_TRUE(
+      std::holds_alternative<mink::Segment>(Shape::segment(-half_z, tilted).value().cores()[0]));
 }
 
 TEST(ShapeSum, LengthsThatWouldOverflowStaySeparateCores) {
