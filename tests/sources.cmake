@@ -23,6 +23,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/curved_beside_feature_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/flat_pair_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/corner_solid_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/parallel_slants_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/curved_kink_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/point_polytope_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/segment_box_test.cpp

@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "mink/gjk/corner_solid.hpp"
 #include "mink/gjk/gjk.hpp"
+#include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/support_descent.hpp"
 #include "mink/gjk/support_newton.hpp"
 
@@ -121,6 +123,96 @@ void find_separation(const CoreDifference<A, B>& diff, const GjkOutcome<typename
     out.on_b = out.on_a + gap * out.normal;
 }
 
+/// The cores' support features along a unit normal (A's frame) when each is a point or a segment
+/// (a cone's slant or apex, a cylinder's side line, a box's edge or corner), as segments in A's
+/// frame, with their closest points: points of the cores, so their distance bounds the core
+/// distance from above.
+template <class S>
+struct FeatureSegments {
+  CoreSegment<S> p, q;
+  Vec3T<S> on_a, on_b;
+};
+
+template <ConvexShape A, ConvexShape B>
+std::optional<FeatureSegments<typename A::Scalar>> feature_segments(
+    const CoreDifference<A, B>& diff, const Vec3T<typename A::Scalar>& normal,
+    typename A::Scalar size) {
+  using S = typename A::Scalar;
+  SupportFeatureT<S> feature_a, feature_b;
+  core_features(diff, normal, S(kFaceSnapReach) * size, feature_a, feature_b);
+  if (feature_a.count > 2 || feature_b.count > 2) return std::nullopt;
+  const Vec3T<S>&a0 = feature_a.points[0], &a1 = feature_a.points[feature_a.count - 1];
+  const Vec3T<S> b0 = diff.rotation * feature_b.points[0] + diff.translation;
+  const Vec3T<S> b1 = diff.rotation * feature_b.points[feature_b.count - 1] + diff.translation;
+  FeatureSegments<S> out{
+      {S(0.5) * (a0 + a1), S(0.5) * (a1 - a0)}, {S(0.5) * (b0 + b1), S(0.5) * (b1 - b0)}, {}, {}};
+  closest_points_of_segments(out.p, out.q, out.on_a, out.on_b);
+  if (!is_finite(out.on_a) || !is_finite(out.on_b)) return std::nullopt;
+  return out;
+}
+
+/// Rounds of close_at_feature_segments(): Newton's steps restarted from a normal turned across
+/// the features.
+inline constexpr int kFeatureRounds = 3;
+
+/// For curved cores whose bracket on the distance GJK left open although Newton's steps found
+/// the normal: two cones' slants 1.3e-7 rad from parallel and 5e-12 apart span a thin
+/// parallelogram of A - B, GJK's simplices on it are slivers, and it stopped 2.6e-8 apart (the
+/// slants' distance 5e-12, which Newton's steps had proven from below). The features along
+/// `best` (Newton's answer: its unit normal, A's frame, and h there) give points of the cores
+/// (feature_segments()); where their distance comes within `tolerance` of the proven lower bound,
+/// the bracket is closed and they are the answer. Where it does not (Newton's steps started
+/// from GJK's normal 2.7e-3 rad off, beside a needle cone, and stopped at a kink of h), the
+/// normal turned across both features (make_orthogonal(): the answer's normal is across a
+/// segment whose interior it meets, and two nearly parallel segments are met so) starts the
+/// steps again, up to kFeatureRounds times, while h falls. Returns whether `out` took the
+/// points (`out.upper` their distance, `out.lower` and `out.normal` the best proof); support
+/// calls are counted in `iterations`.
+template <ConvexShape A, ConvexShape B>
+bool close_at_feature_segments(const CoreDifference<A, B>& diff, typename A::Scalar size,
+                               typename A::Scalar tolerance, typename A::Scalar reach,
+                               SupportMinimum<typename A::Scalar> best, int& iterations,
+                               CoreSeparation<typename A::Scalar>& out) {
+  using S = typename A::Scalar;
+  for (int round = 0;; ++round) {
+    const auto features = feature_segments(diff, best.normal, size);
+    if (!features) return false;
+    const S upper = length_of(Vec3T<S>(features->on_b - features->on_a));
+    const S lower = std::max(out.lower, -best.value);
+    // Closed, and the verdict decided: apart beyond `reach` or within it.
+    if (upper - lower <= tolerance && (lower > reach || upper <= reach)) {
+      if (-best.value >= out.lower) {
+        out.lower = -best.value;
+        out.normal = best.normal;
+      }
+      out.on_a = features->on_a;
+      out.on_b = features->on_b;
+      out.upper = upper;
+      return true;
+    }
+    if (round == kFeatureRounds) return false;
+    // Across both features: their common normal, where their closest points are interior to
+    // both (lines that cross, seen along the normal, or a parallelogram face of A - B), and the
+    // normal made orthogonal to them, where one is an end (a point against a line: the
+    // direction around the line is the normal's own); the lower support value.
+    SupportMinimum<S> least;
+    auto measure = [&](const Vec3T<S>& n) {
+      SimplexVertexT<S> w;
+      diff.support(n, w);
+      ++iterations;
+      least.offer(n.dot(w.w), n, w);
+    };
+    Vec3T<S> across = best.normal;
+    if (make_orthogonal(across, features->p.half, features->q.half)) measure(across);
+    if (const auto common = meeting_segments_normal(features->p, features->q))
+      measure(common->dot(best.normal) >= S(0) ? *common : Vec3T<S>(-*common));
+    if (!std::isfinite(least.value)) return false;
+    newton_on_support(diff, size, tolerance, kNewtonMaxSteps, iterations, least);
+    if (!(least.value < best.value)) return false;
+    best = least;
+  }
+}
+
 /// The normal and closest points for GJK's answer on cores that GJK did not find meeting, and
 /// the status of the full shapes; `radii` is the sum of the shapes' radii, `size` the sum of
 /// their bounding radii. A unit n proves the separation -h(n), h the support function of A - B,
@@ -160,6 +252,7 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
   CoreSeparation<S> out;
   find_separation(diff, gjk, touch, tolerances.max_iterations, iterations, out);
   out.upper = gjk.upper;
+  bool closed = false;  // by the features' points (close_at_feature_segments())
   if constexpr (kCurvedPair<A, B>) {
     // Curved cores apart or touching: the normal of a smooth minimum is good to the square root
     // of GJK's tolerance; Newton's steps (gjk/support_newton.hpp) take it to the rounding, and
@@ -185,6 +278,13 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
         out.on_b = pair->on_b;
         share_residual(out.on_a, out.on_b, out.normal, -gjk.upper);
       }
+      // Where the status below would be IterationLimit: GJK capped, its bracket open, or the
+      // cores neither proven apart nor within the touching tolerance.
+      if (gjk.status == Status::IterationLimit ||
+          gjk.upper - out.lower > tolerances.relative_depth * size ||
+          (out.lower <= radii + touch && gjk.upper > radii + touch))
+        closed = close_at_feature_segments(diff, size, tolerances.relative_depth * size,
+                                           radii + touch, least, iterations, out);
     }
   }
   if constexpr (!kCurvedPair<A, B>) {
@@ -209,12 +309,12 @@ CoreSeparation<typename A::Scalar> separate_cores(const CoreDifference<A, B>& di
       }
     }
   }
-  const bool capped = gjk.status == Status::IterationLimit;
-  const bool open = gjk.upper - out.lower > tolerances.relative_depth * size;
-  if (gjk.upper <= radii + touch)
+  const bool capped = gjk.status == Status::IterationLimit && !closed;
+  const bool open = out.upper - out.lower > tolerances.relative_depth * size;
+  if (out.upper <= radii + touch)
     out.status = capped || open ? Status::IterationLimit : Status::Intersecting;
   else if (out.lower <= radii + touch)
-    out.status = gjk.upper <= radii + S(16) * touch ? Status::Intersecting : Status::IterationLimit;
+    out.status = out.upper <= radii + S(16) * touch ? Status::Intersecting : Status::IterationLimit;
   else
     out.status = capped || open ? Status::IterationLimit : Status::Separated;
   return out;
