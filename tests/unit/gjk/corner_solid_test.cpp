@@ -315,6 +315,33 @@ TEST(CornerSolid, SphereAgainstAConeInClosedForm) {
   }
 }
 
+// A point on a cone's slant or a tiny gap above it (0 to 1e-8 of the size): the closed form's
+// normal is the slant's own. From the gap to the foot it took the direction of the gap's
+// rounding: 2.6e-7 rad off at 2.6e-9 of the size, and any direction at all for a point on the
+// slant to rounding (0.6 rad off, its support value 1.1 of the size above the depth 0).
+TEST(CornerSolid, PointOnOrJustAboveAConeSlant) {
+  const int count = oracle::sweep_count(300, 100);
+  for (int i = 0; i < count; ++i) {
+    CornerScene s = make_scene(58000 + i, Feature::ConeSlant);
+    s.gap = i % 4 == 0 ? 0 : s.size * oracle::Rng(58000 + i).log_uniform(1e-15, 1e-8);
+    s.note = "point " + std::to_string(s.gap / s.size) + " of the size above a cone's slant, " +
+             oracle::seed_note(58000 + i);
+    const mink::Point point{Vec3::Zero()};
+    const Pose pose_point = Pose::from(s.on_solid + s.gap * s.normal, mink::Quat(1, 0, 0, 0));
+    const double rounding = oracle::world_rounding(s.pose_solid.translation);
+    const double tolerance = 1e-9 * s.size + rounding;
+    const auto c = mink::contact(s.cone_shape, s.pose_solid, point, pose_point);
+    ASSERT_NE(c.status, mink::Status::InvalidInput) << s.note;
+    EXPECT_NEAR(c.distance - c.depth, s.gap, tolerance) << s.note;
+    EXPECT_LE(oracle::angle(c.normal, s.normal), 1e-9) << s.note;
+    EXPECT_LE((c.point_a - s.on_solid).norm(), tolerance) << s.note;
+    const auto d = mink::distance(point, pose_point, s.cone_shape, s.pose_solid);
+    if (d.status == mink::Status::Separated)
+      EXPECT_LE(oracle::angle(d.normal, Vec3(-s.normal)), 1e-9) << s.note;
+    if (::testing::Test::HasFailure()) break;
+  }
+}
+
 // A cone and spheres at 1e200, where r (h - z) and 2h rho overflow: the closed form works with
 // their ratios to the cone's size. One sphere beyond the rim, one inside above the base.
 TEST(CornerSolid, SphereAgainstAConeAt1e200) {
