@@ -336,8 +336,9 @@ TEST(CornerSolid, PointOnOrJustAboveAConeSlant) {
     EXPECT_LE(oracle::angle(c.normal, s.normal), 1e-9) << s.note;
     EXPECT_LE((c.point_a - s.on_solid).norm(), tolerance) << s.note;
     const auto d = mink::distance(point, pose_point, s.cone_shape, s.pose_solid);
-    if (d.status == mink::Status::Separated)
+    if (d.status == mink::Status::Separated) {
       EXPECT_LE(oracle::angle(d.normal, Vec3(-s.normal)), 1e-9) << s.note;
+    }
     if (::testing::Test::HasFailure()) break;
   }
 }
