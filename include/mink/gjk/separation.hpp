@@ -83,14 +83,8 @@ void find_separation(const CoreDifference<A, B>& diff, const GjkOutcome<typename
   if (!plain_differs && !lower_differs && !apart) return;
 
   SupportMinimum<S> least;
-  auto measure = [&](const Vec3T<S>& n) {
-    SimplexVertexT<S> w;
-    diff.support(n, w);
-    ++iterations;
-    least.offer(n.dot(w.w), n, w);
-  };
-  measure(out.normal);
-  if (plain_differs) measure(plain);
+  least.measure(diff, out.normal, iterations);
+  if (plain_differs) least.measure(diff, plain, iterations);
   const S free_value = least.value;  // the best of the first pair
   const Vec3T<S> free_normal = least.normal;
   // The minimum of h is minus the distance, at least -gjk.upper. The lower bound's direction
@@ -98,7 +92,7 @@ void find_separation(const CoreDifference<A, B>& diff, const GjkOutcome<typename
   // direction), which starts the descent and places the points below. On non-finite arithmetic
   // the descent keeps its last finite answer, which is still a proven separation.
   if (lower_differs && -gjk.lower < least.value)
-    measure(Vec3T<S>(-unit_of(gjk.lower_v, lower_sq, lower_length)));
+    least.measure(diff, Vec3T<S>(-unit_of(gjk.lower_v, lower_sq, lower_length)), iterations);
   if (gjk.upper + least.value > S(2) * touch)
     descend_support(diff, -gjk.upper, touch, iterations + max_iterations / 4, iterations, least);
   out.lower = std::max(out.lower, -least.value);
@@ -196,16 +190,12 @@ bool close_at_feature_segments(const CoreDifference<A, B>& diff, typename A::Sca
     // normal made orthogonal to them, where one is an end (a point against a line: the
     // direction around the line is the normal's own); the lower support value.
     SupportMinimum<S> least;
-    auto measure = [&](const Vec3T<S>& n) {
-      SimplexVertexT<S> w;
-      diff.support(n, w);
-      ++iterations;
-      least.offer(n.dot(w.w), n, w);
-    };
     Vec3T<S> across = best.normal;
-    if (make_orthogonal(across, features->p.half, features->q.half)) measure(across);
+    if (make_orthogonal(across, features->p.half, features->q.half))
+      least.measure(diff, across, iterations);
     if (const auto common = meeting_segments_normal(features->p, features->q))
-      measure(common->dot(best.normal) >= S(0) ? *common : Vec3T<S>(-*common));
+      least.measure(diff, common->dot(best.normal) >= S(0) ? *common : Vec3T<S>(-*common),
+                    iterations);
     if (!std::isfinite(least.value)) return false;
     newton_on_support(diff, size, tolerance, kNewtonMaxSteps, iterations, least);
     if (!(least.value < best.value)) return false;

@@ -33,15 +33,22 @@ struct SupportMinimum {
     }
   }
 
+  /// Measures h along the unit n (one support call of `diff`, counted in `iterations`) and
+  /// offers it.
+  template <class Difference>
+  void measure(const Difference& diff, const Vec3T<S>& n, int& iterations) {
+    SimplexVertexT<S> w;
+    diff.support(n, w);
+    ++iterations;
+    offer(n.dot(w.w), n, w);
+  }
+
   /// The least so far of a search started at the unit n: its support point, one support call
   /// counted in `iterations`.
   template <class Difference>
   static SupportMinimum at(const Difference& diff, const Vec3T<S>& n, int& iterations) {
     SupportMinimum least;
-    SimplexVertexT<S> w;
-    diff.support(n, w);
-    ++iterations;
-    least.offer(n.dot(w.w), n, w);
+    least.measure(diff, n, iterations);
     return least;
   }
 };

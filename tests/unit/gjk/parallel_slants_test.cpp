@@ -17,6 +17,7 @@
 
 #include "mink/mink.hpp"
 #include "oracle/check.hpp"
+#include "oracle/curved.hpp"
 #include "oracle/random.hpp"
 
 namespace {
@@ -24,14 +25,16 @@ namespace {
 using mink::Pose;
 using mink::Vec3;
 
-// Support point and value of a cone (apex at +h on z, base disc of radius r at -h) along local d.
+// Support point of a cone (apex at +h on z, base disc of radius r at -h) along local d.
 Vec3 cone_support_point(double r, double h, const Vec3& d) {
   const double across = std::hypot(d.x(), d.y());
   if (d.z() * h >= r * across - d.z() * h || across == 0) return Vec3(0, 0, h);
   return Vec3(r * d.x() / across, r * d.y() / across, -h);
 }
+// Its support value: the oracle's (oracle/curved.hpp, long double).
 double cone_support_value(double r, double h, const Vec3& d) {
-  return std::max(d.z() * h, r * std::hypot(d.x(), d.y()) - d.z() * h);
+  const oracle::CurvedShape cone{oracle::CurvedKind::Cone, r, h, oracle::V3::Zero()};
+  return double(oracle::local_support(cone, d.cast<oracle::Real>()));
 }
 
 struct SlantScene {
