@@ -183,6 +183,54 @@ TEST(ParallelSlants, ProbeScenesOfSlantsTiltedOutOfTheirPlane) {
   }
 }
 
+// A box plus a cone against a cone, 2.8e-12 apart (just beyond the touching tolerance, 2.7e-12):
+// the features' pair along Newton's normal was 7.1e-11 apart, and the answer took it over GJK's
+// tighter 3.2e-12. Either verdict is right so close to touching; a separated answer must be
+// within the rounding of what its own normal proves (the support values of both shapes along
+// it, each a closed form here).
+TEST(ParallelSlants, FeaturesPairLooserThanGjksIsNotTaken) {
+  const mink::Vec3 half(0.10822503696671087, 0.26508279559779491, 0.40167259661775756);
+  const mink::Cone cone_a{0.58377405615981348, 0.35969053398004369};
+  const mink::Cone cone_b{1.4038566743713292, 0.56357878704640063};
+  const mink::Shape a =
+      mink::Shape::sum(mink::Shape::box(half).value(),
+                       mink::Shape::cone(cone_a.radius, cone_a.half_height).value())
+          .value();
+  const mink::Shape b = mink::Shape::cone(cone_b.radius, cone_b.half_height).value();
+  const Pose pose_a = Pose::from(Vec3(0.378030007787862, 0.55491858967191643, 0.34505942807231915),
+                                 mink::Quat(0.67654230057762543, -0.30960194382678757,
+                                            0.024067895153281765, -0.66772590808706778));
+  const Pose pose_b = Pose::from(Vec3(1.8221407746911247, 0.14415821780882626, 1.5892935465140081),
+                                 mink::Quat(0.30506643076148066, -0.26475521638553562,
+                                            0.47233426768219106, 0.78341527161029156));
+  const double size = half.norm() + std::hypot(cone_a.radius, cone_a.half_height) +
+                      std::hypot(cone_b.radius, cone_b.half_height);
+  // Support values in world along n: the box's sum of |n_i| half_i, the cones' closed forms.
+  auto h_a = [&](const Vec3& n) {
+    const Vec3 local = pose_a.rotation.transpose() * n;
+    return local.cwiseAbs().dot(half) +
+           cone_support_value(cone_a.radius, cone_a.half_height, local) + n.dot(pose_a.translation);
+  };
+  auto h_b = [&](const Vec3& n) {
+    return cone_support_value(cone_b.radius, cone_b.half_height, pose_b.rotation.transpose() * n) +
+           n.dot(pose_b.translation);
+  };
+  auto check = [&](const auto& r, bool swapped, const char* query) {
+    const std::string what = std::string(query) + (swapped ? " (B first)" : " (A first)");
+    ASSERT_TRUE(r.status == mink::Status::Separated || r.status == mink::Status::Intersecting)
+        << what;
+    if (r.status != mink::Status::Separated) return;
+    const Vec3 n = swapped ? Vec3(-r.normal) : r.normal;
+    const double proven = -(h_a(n) + h_b(-n));
+    EXPECT_LE(r.distance - proven, 1e-12 * size) << what;
+    EXPECT_NEAR((r.point_b - r.point_a).norm(), r.distance, 1e-14 * size) << what;
+  };
+  check(mink::distance(a, pose_a, b, pose_b), false, "distance");
+  check(mink::distance(b, pose_b, a, pose_a), true, "distance");
+  check(mink::contact(a, pose_a, b, pose_b), false, "contact");
+  check(mink::contact(b, pose_b, a, pose_a), true, "contact");
+}
+
 TEST(ParallelSlants, ConesApartAcrossNearlyParallelSlants) {
   const int count = oracle::sweep_count(600, 150);
   for (int i = 0; i < count; ++i) {
