@@ -72,6 +72,35 @@ bool with_solid(const T& shape, Fn&& fn) {
   return false;
 }
 
+/// Cores that may have a corner: a point whose normal cone has an inside. An ellipsoid's normal
+/// cones are rays, a cylinder's rays or (on a rim) flat wedges, and a sum's are the meets of its
+/// terms', so a sum with one of them has none either: corner_solid_pair() does not look for a
+/// corner on them (for two ellipsoids, that look was a third of distance()'s time, all of it in
+/// the nearest points of the turned support points).
+template <class T>
+struct CornerCore : std::true_type {};
+template <class S>
+struct CornerCore<CylinderT<S>> : std::false_type {};
+template <class S>
+struct CornerCore<EllipsoidT<S>> : std::false_type {};
+template <class T>
+struct CornerCore<Rounded<T>> : CornerCore<T> {};
+template <class X, class Y>
+struct CornerCore<MinkowskiSum<X, Y>>
+    : std::bool_constant<CornerCore<X>::value && CornerCore<Y>::value> {};
+
+/// Whether `core` may have a corner (CornerCore); a run-time Shape asks each of its terms.
+template <ConvexShape T>
+bool may_have_corner(const T& core) {
+  if constexpr (std::is_same_v<T, Shape>) {
+    for (const Core& term : core.cores())
+      if (!visit_core(term, [](const auto& c) { return may_have_corner(c); })) return false;
+    return true;
+  } else {
+    return CornerCore<T>::value;
+  }
+}
+
 /// A corner of one core and its nearest point on the other, a solid, as witness points of cores
 /// apart: A's point, B's point and the unit normal from A to B, in A's frame.
 template <class S>
@@ -116,8 +145,8 @@ std::optional<CornerSolidPair<typename A::Scalar>> no_higher(
 /// Newton's normal may lie beside another corner, and the points stayed Newton's, 8e-8 of the size
 /// off. Five support calls of a core for each side tried (nine where the point is no corner), one
 /// more for each point tried without the corner test, one of A - B for a pair found, counted in
-/// `iterations`. Nothing when no core is a solid, when no point tried is outside the solid, or when
-/// no pair is kept.
+/// `iterations`. Nothing when no core is a solid facing one that may have a corner
+/// (may_have_corner()), when no point tried is outside the solid, or when no pair is kept.
 template <ConvexShape A, ConvexShape B>
 std::optional<CornerSolidPair<typename A::Scalar>> corner_solid_pair(
     const CoreDifference<A, B>& diff, const SupportMinimum<typename A::Scalar>& at_normal,
@@ -160,32 +189,34 @@ std::optional<CornerSolidPair<typename A::Scalar>> corner_solid_pair(
   // B a solid, A's support point a corner. Taken again, not from `at_normal`: Newton's witness
   // there may be a point placed from B's (feature_witness()), which the turned support
   // points would never equal.
-  with_solid(diff.b, [&](auto solid_core, const auto& solid) {
-    using Solid = typename decltype(solid_core)::type;
-    try_core(diff.a, normal, [&](const V& corner, CornerSolidPair<S>& pair, V& pair_d) {
-      const auto local =
-          Solid::local(solid, V(diff.rotation.transpose() * (corner - diff.translation)));
-      if (!local) return false;
-      pair_d = -(diff.rotation * local->out_of_solid);
-      pair = {corner, V(diff.rotation * local->on_solid + diff.translation), pair_d,
-              local->signed_distance};
-      return true;
+  if (may_have_corner(diff.a))
+    with_solid(diff.b, [&](auto solid_core, const auto& solid) {
+      using Solid = typename decltype(solid_core)::type;
+      try_core(diff.a, normal, [&](const V& corner, CornerSolidPair<S>& pair, V& pair_d) {
+        const auto local =
+            Solid::local(solid, V(diff.rotation.transpose() * (corner - diff.translation)));
+        if (!local) return false;
+        pair_d = -(diff.rotation * local->out_of_solid);
+        pair = {corner, V(diff.rotation * local->on_solid + diff.translation), pair_d,
+                local->signed_distance};
+        return true;
+      });
     });
-  });
   if (out) return no_higher(diff, at_normal, std::move(out), iterations);
   // A a solid, B's support point a corner.
-  with_solid(diff.a, [&](auto solid_core, const auto& solid) {
-    using Solid = typename decltype(solid_core)::type;
-    try_core(diff.b, V(diff.rotation.transpose() * -normal),
-             [&](const V& corner_b, CornerSolidPair<S>& pair, V& pair_d) {
-               const V corner = diff.rotation * corner_b + diff.translation;
-               const auto local = Solid::local(solid, corner);
-               if (!local) return false;
-               pair_d = diff.rotation.transpose() * -local->out_of_solid;
-               pair = {local->on_solid, corner, local->out_of_solid, local->signed_distance};
-               return true;
-             });
-  });
+  if (may_have_corner(diff.b))
+    with_solid(diff.a, [&](auto solid_core, const auto& solid) {
+      using Solid = typename decltype(solid_core)::type;
+      try_core(diff.b, V(diff.rotation.transpose() * -normal),
+               [&](const V& corner_b, CornerSolidPair<S>& pair, V& pair_d) {
+                 const V corner = diff.rotation * corner_b + diff.translation;
+                 const auto local = Solid::local(solid, corner);
+                 if (!local) return false;
+                 pair_d = diff.rotation.transpose() * -local->out_of_solid;
+                 pair = {local->on_solid, corner, local->out_of_solid, local->signed_distance};
+                 return true;
+               });
+    });
   return out ? no_higher(diff, at_normal, std::move(out), iterations) : out;
 }
 

@@ -20,7 +20,7 @@ struct ConeT {
     // The support is the apex or a point of the base rim, whichever reaches farther along d:
     // apex: h*dz; rim: radius*|d_xy| - h*dz.
     const Vec3T<S> d = detail::rescaled_direction(direction);
-    const S rho = std::hypot(d.x(), d.y());
+    const S rho = detail::planar_length(d.x(), d.y());
     const S apex = half_height * d.z();
     const S rim = radius * rho - half_height * d.z();
     if (apex >= rim) return {S(0), S(0), half_height};
