@@ -103,6 +103,13 @@ struct GjkOutcome {
   /// and copying it on every improvement costs the hot loop.
   Vec3T<S> lower_v = Vec3T<S>::Zero();
   int iterations = 0;
+  /// gjk_apart() (separation.hpp): Newton's steps closed the bracket from the loose run's normal;
+  /// `refined_normal` is theirs (unit, A's frame, from A to B), `refined_value` the support value
+  /// of A - B along it and simplex.vertices[0] their witness pair, so separate_cores() takes them
+  /// instead of taking the steps again.
+  bool refined = false;
+  Vec3T<S> refined_normal = Vec3T<S>::Zero();
+  S refined_value = S(0);
 };
 
 /// What the cheap first phase of the boolean test found (enclose_origin()).
@@ -407,8 +414,12 @@ template <EnclosePhase kEnclose = EnclosePhase::Off, ConvexShape A, ConvexShape 
 GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff,
                                                 typename A::Scalar radius, typename A::Scalar size,
                                                 const TolerancesT<typename A::Scalar>& tol,
-                                                GjkCacheT<typename A::Scalar>* cache) {
+                                                GjkCacheT<typename A::Scalar>* cache,
+                                                typename A::Scalar stop_gap = 0) {
   using S = typename A::Scalar;
+  // The bracket's width at which the loop stops (unit: length): `tol.relative * size` unless the
+  // caller asks for a looser one (gjk_apart(), whose Newton steps close it).
+  const S converged = stop_gap > S(0) ? stop_gap : tol.relative * size;
   GjkOutcome<S> out;
   // Two buffers: the simplex, and the trial simplices of the recombination below, which take its
   // place when they get closer.
@@ -513,7 +524,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
       // (tol * size)^2 |v|^2 underflows for shapes of 1e-100, and the loop then ran on to a false
       // rounding floor, 0.5% short.
       const S gap = v_sq - vw;
-      if (gap <= S(0) || gap <= tol.relative * size * v_length) {
+      if (gap <= S(0) || gap <= converged * v_length) {
         out.status = Status::Separated;
         break;
       }
@@ -569,7 +580,7 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
       if (!(best_sq < v_sq)) {
         // Still stuck with the bounds apart: restart from a fresh simplex along v, which sheds
         // the crowded points; keep the best answer seen in case the restart does no better.
-        if (restarts < kMaxRestarts && v_sq - vw > tol.relative * size * std::sqrt(v_sq)) {
+        if (restarts < kMaxRestarts && v_sq - vw > converged * std::sqrt(v_sq)) {
           ++restarts;
           if (v_sq < saved_sq) {
             saved = simplex;

@@ -64,7 +64,11 @@ class Shape {
   /// Three equal radii give a sphere: its centre as the core, with that radius, as sphere() builds
   /// it.
   static Expected<Shape> ellipsoid(const Vec3& radii);
+  /// A point at the origin is held as a Sphere core of radius 0, as sphere(0) builds it (the
+  /// same set, and its faster closed forms); cores() shows that core.
   static Expected<Shape> point(const Vec3& p);
+  /// A segment symmetric about the origin along z (a == -b) is held as a Capsule core, as
+  /// capsule(0, |b.z|) builds it (a Sphere core when a == b == 0); cores() shows that core.
   static Expected<Shape> segment(const Vec3& a, const Vec3& b);
   static Expected<Shape> triangle(const Vec3& a, const Vec3& b, const Vec3& c);
   /// The convex hull of `points` (Polytope): support scans them, with no set-up cost, and a set of
@@ -91,6 +95,9 @@ class Shape {
   /// (src/shape_dispatch.hpp). Errors: a bad factor, or lengths that overflow.
   Expected<Shape> scaled(double factor) const;
 
+  /// The cores, in canonical form: wherever a Shape is made or scaled, a point at the origin (or
+  /// a capsule's core of no length) becomes a Sphere core and a segment symmetric about the
+  /// origin along z a Capsule core (the same sets).
   const std::vector<Core>& cores() const { return cores_; }
 
   Vec3 support_core(const Vec3& d) const;

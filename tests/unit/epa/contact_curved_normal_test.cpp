@@ -78,8 +78,10 @@ TEST(ContactCurvedNormal, NormalsMatchTheLeastSupportValue) {
 }
 
 TEST(ContactCurvedNormal, RefinementCanBeTurnedOff) {
-  // Tolerances::refine_curved_normals = false: GJK's and EPA's own normal, fewer support calls,
-  // the same depth and distance to EPA's tolerance.
+  // Tolerances::refine_curved_normals = false: GJK's and EPA's own normal, the same depth and
+  // distance to EPA's tolerance, and fewer support calls where the shapes penetrate. Apart, the
+  // refinement's Newton steps close GJK's bracket in place of its last iterations (gjk_apart()),
+  // and may take fewer.
   const mink::Ellipsoid a{mink::Vec3(1.0, 0.7, 0.5)};
   const mink::Cylinder b{0.6, 0.9};
   mink::Tolerances plain;
@@ -92,7 +94,7 @@ TEST(ContactCurvedNormal, RefinementCanBeTurnedOff) {
     const auto refined = mink::contact(a, pa, b, pb);
     const auto unrefined = mink::contact(a, pa, b, pb, plain);
     ASSERT_EQ(refined.intersect, unrefined.intersect);
-    EXPECT_LT(unrefined.iterations, refined.iterations);
+    if (refined.intersect) EXPECT_LT(unrefined.iterations, refined.iterations);
     EXPECT_NEAR(refined.depth, unrefined.depth, 1e-9);
     EXPECT_NEAR(refined.distance, unrefined.distance, 1e-9);
     EXPECT_LT((refined.normal - unrefined.normal).norm(), 1e-4);
