@@ -28,11 +28,14 @@
 #include <vector>
 
 #include "mink/mink.hpp"
+#include "peer_pose.hpp"
 
 namespace {
 
 using mink::Pose;
 using mink::Vec3;
+using mink_bench::bullet_pose;
+using mink_bench::fcl_pose;
 
 constexpr int kPairs = 32;
 
@@ -112,13 +115,6 @@ bool mink_depth(const Pair& p, double& depth) {
   return r.intersect;
 }
 
-btTransform bullet_pose(const Pose& p) {
-  const auto& r = p.rotation;
-  return btTransform(
-      btMatrix3x3(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)),
-      btVector3(p.translation.x(), p.translation.y(), p.translation.z()));
-}
-
 bool bullet_depth(const Pair& p, double& depth) {
   const btTransform ta = bullet_pose(p.pa), tb = bullet_pose(p.pb);
   btGjkEpaSolver2::sResults r;
@@ -127,13 +123,6 @@ bool bullet_depth(const Pair& p, double& depth) {
     return false;
   depth = -r.distance;
   return true;
-}
-
-fcl::Transform3d fcl_pose(const Pose& p) {
-  fcl::Transform3d t = fcl::Transform3d::Identity();
-  t.linear() = p.rotation;
-  t.translation() = p.translation;
-  return t;
 }
 
 template <class Solver>

@@ -31,11 +31,14 @@
 #include <vector>
 
 #include "mink/mink.hpp"
+#include "peer_pose.hpp"
 
 namespace {
 
 using mink::Pose;
 using mink::Vec3;
+using mink_bench::bullet_pose;
+using mink_bench::fcl_pose;
 
 constexpr int kPairs = 64;
 
@@ -171,13 +174,6 @@ bool mink_distance(const Pair& p, Answer& out) {
   return r.status == mink::Status::Separated;
 }
 
-btTransform bullet_pose(const Pose& p) {
-  const auto& r = p.rotation;
-  return btTransform(
-      btMatrix3x3(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)),
-      btVector3(p.translation.x(), p.translation.y(), p.translation.z()));
-}
-
 bool bullet_distance(const Pair& p, Answer& out) {
   if (!p.bullet_a) return false;
   const btTransform ta = bullet_pose(p.pa), tb = bullet_pose(p.pb);
@@ -189,13 +185,6 @@ bool bullet_distance(const Pair& p, Answer& out) {
   out.on_a = Vec3(r.witnesses[0].x(), r.witnesses[0].y(), r.witnesses[0].z());
   out.on_b = Vec3(r.witnesses[1].x(), r.witnesses[1].y(), r.witnesses[1].z());
   return true;
-}
-
-fcl::Transform3d fcl_pose(const Pose& p) {
-  fcl::Transform3d t = fcl::Transform3d::Identity();
-  t.linear() = p.rotation;
-  t.translation() = p.translation;
-  return t;
 }
 
 template <class Solver>

@@ -33,19 +33,13 @@
 
 #include "mink/manifold/manifold.hpp"
 #include "mink/mink.hpp"
+#include "peer_pose.hpp"
 
 namespace {
 
 using mink::Pose;
 using mink::Quat;
 using mink::Vec3;
-
-btTransform to_bullet(const Pose& p) {
-  const auto& r = p.rotation;
-  const btMatrix3x3 basis(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1),
-                          r(2, 2));
-  return btTransform(basis, btVector3(p.translation.x(), p.translation.y(), p.translation.z()));
-}
 
 /// Collects Bullet's contact points (depth < 0 penetrating in Bullet's sign).
 struct Collector final : btDiscreteCollisionDetectorInterface::Result {
@@ -172,8 +166,8 @@ CaseSet hull_cases(const std::string& name, int vertices, bool as_boxes, int cou
 
 void finish(CaseSet& set) {
   for (const Pair& p : set.pairs) {
-    set.ta.push_back(to_bullet(p.pa));
-    set.tb.push_back(to_bullet(p.pb));
+    set.ta.push_back(mink_bench::bullet_pose(p.pa));
+    set.tb.push_back(mink_bench::bullet_pose(p.pb));
   }
 }
 

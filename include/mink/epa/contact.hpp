@@ -233,8 +233,7 @@ ContactResultT<typename A::Scalar> contact_in_range(
   // touching or apart, where it would prove nothing.
   constexpr bool kBoxes = detail::BoxCore<A>::value && detail::BoxCore<B>::value;
   constexpr auto kPhase = kBoxes ? detail::EnclosePhase::Off : detail::EnclosePhase::Simplex;
-  const auto gjk =
-      detail::gjk_apart<kPhase>(diff, radius_a + radius_b, size, tolerances, cache);
+  const auto gjk = detail::gjk_apart<kPhase>(diff, radius_a + radius_b, size, tolerances, cache);
   result.iterations = gjk.iterations;
   if (gjk.status == Status::InvalidInput) {
     result.error = detail::kOverflowError;

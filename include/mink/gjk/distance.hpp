@@ -210,8 +210,7 @@ DistanceResultT<typename A::Scalar> distance_in_range(
   // Overlapping cores with no radius: the boolean test's first phase proves most of them enclosed
   // for less than the distance loop (run_gjk_distance()); boxes have had the test above.
   constexpr auto kPhase = kBoxes ? detail::EnclosePhase::Off : detail::EnclosePhase::Verdict;
-  const auto gjk =
-      detail::gjk_apart<kPhase>(diff, radius_a + radius_b, size, tolerances, cache);
+  const auto gjk = detail::gjk_apart<kPhase>(diff, radius_a + radius_b, size, tolerances, cache);
   result.status = gjk.status;
   result.iterations = gjk.iterations;
   if (gjk.status == Status::InvalidInput) {
