@@ -103,6 +103,37 @@ inline Real local_support(const CurvedShape& s, const V3& u) {
   return 0;
 }
 
+/// A support point of the shape in its own frame along u (nonzero): the gradient of
+/// local_support() where it has one; on a flat face or edge, the end or corner the signs of u pick.
+/// Tests that build a pair with a known answer place the shapes by it.
+inline V3 local_support_point(const CurvedShape& s, const V3& u) {
+  const Real rho = std::sqrt(u.x() * u.x() + u.y() * u.y());
+  const auto sign = [](Real x) { return x < 0 ? Real(-1) : Real(1); };
+  const auto rim = [&](Real z) {
+    return rho > 0 ? V3(s.radius * u.x() / rho, s.radius * u.y() / rho, z) : V3(0, 0, z);
+  };
+  switch (s.kind) {
+    case CurvedKind::Sphere:
+      return s.radius * u.normalized();
+    case CurvedKind::Box:
+      return V3(sign(u.x()) * s.extents.x(), sign(u.y()) * s.extents.y(),
+                sign(u.z()) * s.extents.z());
+    case CurvedKind::Capsule:
+      return V3(0, 0, sign(u.z()) * s.half_height) + s.radius * u.normalized();
+    case CurvedKind::Cylinder:
+      return rim(sign(u.z()) * s.half_height);
+    case CurvedKind::Cone:
+      if (s.half_height * u.z() >= s.radius * rho - s.half_height * u.z())
+        return V3(0, 0, s.half_height);
+      return rim(-s.half_height);
+    case CurvedKind::Ellipsoid: {
+      const V3 scaled = s.extents.cwiseProduct(u);
+      return s.extents.cwiseProduct(scaled) / scaled.norm();
+    }
+  }
+  return V3::Zero();
+}
+
 /// Support function of the posed shape: h(u) = t . u + h_local(R^T u).
 inline Real world_support(const CurvedShape& s, const RigidPose& p, const V3& u) {
   return p.translation.dot(u) + local_support(s, p.rotation.transpose() * u);
