@@ -160,9 +160,8 @@ inline constexpr int kFeatureRounds = 3;
 /// cone, and stopped at a kink of h), the normal turned across both features (make_orthogonal():
 /// the answer's normal is across a segment whose interior it meets, and two nearly parallel
 /// segments are met so) starts the steps again, up to kFeatureRounds times, while h falls. Returns
-/// whether the bracket closed
-/// (`out.upper` the closer pair's distance, `out.lower` and `out.normal` the best proof);
-/// support calls are counted in `iterations`.
+/// whether the bracket closed (`out.upper` the closer pair's distance, `out.lower` and
+/// `out.normal` the best proof); support calls are counted in `iterations`.
 template <ConvexShape A, ConvexShape B>
 bool close_at_feature_segments(const CoreDifference<A, B>& diff, typename A::Scalar size,
                                typename A::Scalar tolerance, typename A::Scalar reach,
