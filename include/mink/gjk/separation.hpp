@@ -283,6 +283,9 @@ GjkOutcome<typename A::Scalar> gjk_apart(const CoreDifference<A, B>& diff,
       if (loose.status == Status::IterationLimit || loose.status == Status::InvalidInput ||
           (loose.status == Status::Intersecting && !(loose.upper > touch)))
         return loose;
+      // The best lower bound proven on the way, which the full run keeps (below).
+      S proven = loose.lower;
+      Vec3T<S> proven_v = loose.lower_v;
       if (loose.status == Status::Separated && loose.lower > radius + S(16) * touch) {
         int iterations = loose.iterations;
         auto least = SupportMinimum<S>::at(diff, Vec3T<S>(-loose.v / loose.upper), iterations);
@@ -308,9 +311,20 @@ GjkOutcome<typename A::Scalar> gjk_apart(const CoreDifference<A, B>& diff,
           return loose;
         }
         loose.iterations = iterations;
+        if (-least.value > proven) {
+          proven = -least.value;
+          proven_v = -least.normal;
+        }
       }
       auto full = run_gjk_distance<kPhase>(diff, radius, size, tol, warm);
       full.iterations += loose.iterations;
+      // The full run, warm, may not prove again what the loose run or Newton's steps proved:
+      // contact() takes cores apart only on GJK's lower bound, and 37 pairs 1.03-1.63 touching
+      // tolerances apart came out touching from contact() and apart from distance().
+      if (full.upper > touch && proven > full.lower) {
+        full.lower = proven;
+        full.lower_v = proven_v;
+      }
       return full;
     }
   }

@@ -216,4 +216,64 @@ TEST(CurvedSeparation, SmoothPairsApartExactToRounding) {
   std::printf("[  worst   ] distance %.3g, points %.3g of the size\n", worst_distance, worst_point);
 }
 
+// Pairs built 1.16 to 1.41 touching tolerances apart (stop 87's second probe; the gaps are its
+// construction's): contact() took them touching where distance() took them apart, when GJK's
+// hand-off to Newton's steps fell back to the full run and that run, warm, did not prove the
+// lower bound above the touching tolerance again. The full run now keeps the bound proven before.
+TEST(CurvedSeparation, ContactAgreesWithDistanceJustBeyondTouching) {
+  struct Probe {
+    mink::Shape a, b;
+    Pose pose_a, pose_b;
+    double gap;
+  };
+  const auto pose = [](double x, double y, double z, double w, double i, double j, double k) {
+    return Pose::from(Vec3(x, y, z), mink::Quat(w, i, j, k));
+  };
+  const Probe probes[] = {
+      {mink::Shape::segment(Vec3(-0.08127183962500772, -0.156861337790925, 0.10711736325403173),
+                            Vec3(0.13806860942544497, 0.15914110827244868, -0.12615822980797184))
+           .value(),
+       mink::Shape::cylinder(0.1089506060935524, 0.07321432192943891).value(),
+       pose(0.17947167936957084, -0.040490540567635465, -0.1861312510240266, 0.6030972853763887,
+            -0.41861446771011823, 0.6615570783799875, -0.15289808318203402),
+       pose(-0.021869037271445728, -0.0831429757126356, -0.4887785950558766, 0.6254154039428025,
+            0.5087385799264621, -0.13039129484123393, 0.5770950875159955),
+       5.296565583103442e-13},
+      {mink::Shape::cylinder(0.08125718206041493, 0.04960985856792175).value(),
+       mink::Shape::box(Vec3(0.03945094595496658, 0.028624002856785017, 0.03553299773683564))
+           .value(),
+       pose(0.09649661508043289, 0.34864560859538773, -0.10644736128011745, -0.6233332362536644,
+            -0.20236481460211894, -0.015671369211212455, 0.755154664012366),
+       pose(0.19061574149707805, 0.26323144978531543, -0.016875992781228033, -0.7662204193792642,
+            0.030712971965995157, -0.020887668440629777, 0.6415034587485829),
+       1.9894332452456127e-13},
+      {mink::Shape::segment(Vec3(-0.09221862975727725, 0.03146635938941232, 0.08620597429807281),
+                            Vec3(0.0675456543556522, -0.03083585063871349, -0.11619060051699409))
+           .value(),
+       mink::Shape::cylinder(0.07119363500909155, 0.1787513245964626).value(),
+       pose(-0.018978190324246174, 0.004621542405462654, 0.03932057159366358, -0.5602540720812125,
+            -0.3746340704835041, 0.4002443498937415, 0.6209421457169071),
+       pose(0.25221639583477445, -0.06090473681683828, -0.09384094364971649, 0.3327692429746124,
+            -0.6161443586176858, -0.3978160260714544, 0.5927673824312704),
+       3.824738435018491e-13}};
+  int index = 0;
+  for (const Probe& p : probes) {
+    const double size = p.a.bounding_radius() + p.b.bounding_radius();
+    for (const bool swapped : {false, true}) {
+      const mink::Shape& first = swapped ? p.b : p.a;
+      const mink::Shape& second = swapped ? p.a : p.b;
+      const Pose& first_pose = swapped ? p.pose_b : p.pose_a;
+      const Pose& second_pose = swapped ? p.pose_a : p.pose_b;
+      const auto c = mink::contact(first, first_pose, second, second_pose);
+      const auto d = mink::distance(first, first_pose, second, second_pose);
+      const std::string what = "probe " + std::to_string(index) + (swapped ? " (B first)" : "");
+      EXPECT_FALSE(c.intersect) << what;
+      EXPECT_EQ(c.intersect, d.intersect) << what;
+      EXPECT_EQ(c.status, mink::Status::Separated) << what;
+      EXPECT_NEAR(c.distance, p.gap, 1e-12 * size) << what;
+    }
+    ++index;
+  }
+}
+
 }  // namespace
