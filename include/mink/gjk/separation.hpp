@@ -229,30 +229,27 @@ template <class X, class Y>
 struct NewtonHandOffCore<MinkowskiSum<X, Y>>
     : std::bool_constant<NewtonHandOffCore<X>::value && NewtonHandOffCore<Y>::value> {};
 
-/// Whether gjk_apart() hands the pair over to Newton's steps (NewtonHandOffCore on both). A
-/// run-time Shape asks each of its terms, and the pair needs a curved term (a cylinder or an
-/// ellipsoid): kCurvedPair holds for every Shape, and a sum of polytopes gains nothing.
+/// Whether `core` allows the hand-off (NewtonHandOffCore); `curved` is set when it is or holds a
+/// curved core. A run-time Shape asks each of its terms.
+template <ConvexShape T>
+bool allows_newton_hand_off(const T& core, bool& curved) {
+  if constexpr (std::is_same_v<T, Shape>) {
+    for (const Core& term : core.cores())
+      if (!visit_core(term, [&curved](const auto& c) { return allows_newton_hand_off(c, curved); }))
+        return false;
+    return true;
+  } else {
+    curved |= CurvedCore<T>::value;
+    return NewtonHandOffCore<T>::value;
+  }
+}
+
+/// Whether gjk_apart() hands the pair over to Newton's steps: both cores allow it, and one of
+/// them is curved (kCurvedPair holds for every Shape, and a sum of polytopes gains nothing).
 template <ConvexShape A, ConvexShape B>
 bool hands_off_to_newton(const A& a, const B& b) {
-  if constexpr (std::is_same_v<A, Shape> || std::is_same_v<B, Shape>) {
-    bool curved = false;
-    const auto terms_allow = [&curved](const auto& core) {
-      if constexpr (std::is_same_v<std::decay_t<decltype(core)>, Shape>) {
-        for (const Core& term : core.cores()) {
-          if (std::holds_alternative<Cone>(term)) return false;
-          curved |=
-              std::holds_alternative<Cylinder>(term) || std::holds_alternative<Ellipsoid>(term);
-        }
-        return true;
-      } else {
-        curved |= CurvedCore<std::decay_t<decltype(core)>>::value;
-        return NewtonHandOffCore<std::decay_t<decltype(core)>>::value;
-      }
-    };
-    return terms_allow(a) && terms_allow(b) && curved;
-  } else {
-    return NewtonHandOffCore<A>::value && NewtonHandOffCore<B>::value;
-  }
+  bool curved = false;
+  return allows_newton_hand_off(a, curved) && allows_newton_hand_off(b, curved) && curved;
 }
 
 /// GJK's outcome on cores that may be apart, for distance() and contact(). Curved cores (with
@@ -291,29 +288,27 @@ GjkOutcome<typename A::Scalar> gjk_apart(const CoreDifference<A, B>& diff,
         auto least = SupportMinimum<S>::at(diff, Vec3T<S>(-loose.v / loose.upper), iterations);
         newton_on_support(diff, size, tol.relative_depth * size, kNewtonMaxSteps, iterations,
                           least);
+        loose.iterations = iterations;
+        if (-least.value >= proven) {
+          proven = -least.value;
+          proven_v = -least.normal;
+        }
         const S upper = length_of(least.vertex.w);
-        const S lower = std::max(loose.lower, -least.value);
         // A witness pair too: the bracket's width is the square of the normal's error, and
         // the points need the normal itself converged.
-        if (upper - lower <= touch && std::isfinite(upper) &&
+        if (upper - proven <= touch && std::isfinite(upper) &&
             is_witness_pair(least, tol.relative_depth * size)) {
           loose.simplex.size = 1;
           loose.simplex.vertices[0] = least.vertex;
           loose.simplex.weights[0] = S(1);
           loose.v = least.vertex.w;
           loose.upper = upper;
-          if (-least.value >= loose.lower) loose.lower_v = -least.normal;
-          loose.lower = lower;
-          loose.iterations = iterations;
+          loose.lower = proven;
+          loose.lower_v = proven_v;
           loose.refined = true;
           loose.refined_normal = least.normal;
           loose.refined_value = least.value;
           return loose;
-        }
-        loose.iterations = iterations;
-        if (-least.value > proven) {
-          proven = -least.value;
-          proven_v = -least.normal;
         }
       }
       auto full = run_gjk_distance<kPhase>(diff, radius, size, tol, warm);
