@@ -422,7 +422,27 @@ ContactResultT<typename A::Scalar> contact_in_range(
     // coordinates, B's also by its offset from A, not by their difference w: on cores that
     // touch, w is 1e-14 long, and a face's exact normal, its value 1e-15 above EPA's upper end,
     // was refused for EPA's normal, 3e-8 rad off.
-    if (tolerances.refine_curved_normals && !epa.degenerate) {
+    // On a facet of A - B (detail::on_facet()) EPA's depth and normal are exact, but not its
+    // points: its face's corners come from support points along nearby normals, which on a
+    // curved core lie up to the square root of the rounding (3e-7 of the size) from the one
+    // along the normal. There the polytopes' answer: a face's normal within reach and the
+    // features' witness pair along it (witness_at_face()), when one of them is a single point or
+    // two edges cross; otherwise Newton's steps as elsewhere.
+    bool witnessed = false;
+    if (tolerances.refine_curved_normals && epa.on_facet) {
+      detail::SupportMinimum<S> pair;
+      if (detail::witness_at_face(diff, n, size, result.iterations, pair) &&
+          detail::pair_on_support_planes(pair) &&
+          std::abs(pair.value - core_depth) <= tolerances.relative_depth * size) {
+        n = pair.normal;
+        core_depth = std::max(S(0), pair.value);
+        on_a = pair.vertex.a;
+        on_b = pair.vertex.b;
+        detail::share_residual(on_a, on_b, n, core_depth);
+        refined = witnessed = true;
+      }
+    }
+    if (tolerances.refine_curved_normals && !epa.degenerate && !witnessed) {
       auto least = detail::SupportMinimum<S>::at(diff, n, result.iterations);
       const auto rounding = [&] {
         return S(2) * std::max(detail::support_rounding(least.vertex),

@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -99,6 +102,96 @@ TEST(ContactCurvedNormal, RefinementCanBeTurnedOff) {
     EXPECT_NEAR(refined.distance, unrefined.distance, 1e-9);
     EXPECT_LT((refined.normal - unrefined.normal).norm(), 1e-4);
   }
+}
+
+TEST(ContactCurvedNormal, LowestPointSunkInAFaceIsExact) {
+  // A cylinder's rim, a cone's rim or apex, or an ellipsoid sunk delta into a box's top face well
+  // inside it: depth delta along the face's normal, B's point the lowest point, A's delta above it
+  // on the face. For the rims EPA closes on that facet of A - B to rounding (epa.hpp, on_facet());
+  // its own points, combinations of support points along nearby normals, lay up to 3e-7 of the
+  // size off the rim. The ellipsoids' depths are within its inner ball, which proves Newton's
+  // answer (inner_ball.hpp). Both orders, typed and run-time shapes, and a third of the pairs 1e3
+  // from the origin.
+  std::mt19937_64 rng(20261205);
+  std::uniform_real_distribution<double> unit(-1, 1), tilt(0.2, 1.3), exponent(-4, -2),
+      extent(0.3, 0.9), lateral(-0.8, 0.8);
+  const mink::Box box{mink::Vec3(2.0, 2.0, 0.5)};
+  const double pi = std::acos(-1.0);
+  const char* const names[] = {"cylinder", "cone", "ellipsoid"};
+  double worst_depth = 0, worst_normal = 0, worst_point = 0;
+  for (int i = 0; i < 360; ++i) {
+    const int kind = i % 3;
+    const bool swap = i % 6 >= 3, typed = i % 12 < 6;
+    const double radius = extent(rng), half_height = extent(rng);
+    const mink::Vec3 radii(extent(rng), extent(rng), extent(rng));
+    const double heading = pi * unit(rng);
+    const mink::Mat3 rotation =
+        (Eigen::AngleAxisd(tilt(rng), mink::Vec3(std::cos(heading), std::sin(heading), 0)) *
+         Eigen::AngleAxisd(pi * unit(rng), mink::Vec3::UnitZ()))
+            .toRotationMatrix();
+    // The shape's lowest point, from its definition: the rim point along -z in its frame (a
+    // cylinder's on the cap facing down), a cone's apex when that reaches lower, an ellipsoid's
+    // D^2 d / |D d| for D = diag(radii) and d = -z.
+    const mink::Vec3 down = rotation.transpose() * mink::Vec3(0, 0, -1);
+    const double across = std::hypot(down.x(), down.y());
+    mink::Vec3 lowest(radius * down.x() / across, radius * down.y() / across,
+                      kind == 1 || down.z() < 0 ? -half_height : half_height);
+    if (kind == 1 && down.z() * half_height > down.dot(lowest))
+      lowest = mink::Vec3(0, 0, half_height);
+    if (kind == 2) {
+      const mink::Vec3 scaled = radii.cwiseProduct(down);
+      lowest = radii.cwiseProduct(scaled) / scaled.norm();
+    }
+    const double delta = std::pow(10.0, exponent(rng));
+    const mink::Vec3 offset = i % 4 == 0 ? mink::Vec3(1e3, -2e3, 5e2) : mink::Vec3::Zero();
+    const mink::Vec3 deepest = mink::Vec3(lateral(rng), lateral(rng), 0.5 - delta) + offset;
+    const mink::Pose box_pose = mink::Pose::from_translation(offset);
+    mink::Pose shape_pose;
+    shape_pose.rotation = rotation;
+    shape_pose.translation = deepest - rotation * lowest;
+    const auto solve = [&](const auto& box_core, const auto& shape) {
+      return swap ? mink::contact(shape, shape_pose, box_core, box_pose)
+                  : mink::contact(box_core, box_pose, shape, shape_pose);
+    };
+    mink::ContactResult r;
+    double shape_bound = std::hypot(radius, half_height);
+    if (kind == 2) {
+      shape_bound = radii.maxCoeff();
+      r = typed ? solve(box, mink::Ellipsoid{radii})
+                : solve(mink::Shape::box(box.half_extents).value(),
+                        mink::Shape::ellipsoid(radii).value());
+    } else if (typed) {
+      r = kind == 1 ? solve(box, mink::Cone{radius, half_height})
+                    : solve(box, mink::Cylinder{radius, half_height});
+    } else {
+      r = solve(mink::Shape::box(box.half_extents).value(),
+                kind == 1 ? mink::Shape::cone(radius, half_height).value()
+                          : mink::Shape::cylinder(radius, half_height).value());
+    }
+    SCOPED_TRACE(std::string(names[kind]) + (swap ? " first" : " second") +
+                 (typed ? ", typed #" : ", Shape #") + std::to_string(i));
+    ASSERT_EQ(r.status, mink::Status::Intersecting);
+    const double size = box.bounding_radius() + shape_bound;
+    const mink::Vec3 normal = swap ? mink::Vec3(0, 0, -1) : mink::Vec3(0, 0, 1);
+    const mink::Vec3 on_box = deepest + mink::Vec3(0, 0, delta);
+    const mink::Vec3& point_box = swap ? r.point_b : r.point_a;
+    const mink::Vec3& point_shape = swap ? r.point_a : r.point_b;
+    const double rounding = 8 * std::numeric_limits<double>::epsilon() * offset.norm();
+    worst_depth = std::max(worst_depth, std::abs(r.depth - delta) / size);
+    worst_normal = std::max(worst_normal, (r.normal - normal).norm());
+    worst_point = std::max(
+        worst_point,
+        (std::max((point_box - on_box).norm(), (point_shape - deepest).norm()) - rounding) / size);
+    EXPECT_LE(std::abs(r.depth - delta), 1e-13 * size);
+    EXPECT_LE((r.normal - normal).norm(), 1e-13);
+    EXPECT_LE((point_box - on_box).norm(), 1e-12 * size + rounding);
+    EXPECT_LE((point_shape - deepest).norm(), 1e-12 * size + rounding);
+  }
+  RecordProperty("worst_depth", std::to_string(worst_depth));
+  RecordProperty("worst_normal", std::to_string(worst_normal));
+  RecordProperty("worst_point", std::to_string(worst_point));
+  std::printf("lowest point in a face: worst depth %.2e, normal %.2e, points %.2e of the size\n",
+              worst_depth, worst_normal, worst_point);
 }
 
 }  // namespace
