@@ -393,7 +393,7 @@ ContactResultT<typename A::Scalar> contact_in_range(
   }
   S core_depth = std::max(S(0), epa.depth);
   Vec3T<S> on_a = epa.a, on_b = epa.b;
-  bool refined = false;
+  bool refined = epa.proven_by_ball;  // Newton's steps have run, and the ball proved them
   if constexpr (!detail::kCurvedPair<A, B>) {
     // Polytopes: EPA's normal is a face of A - B, exact, but where two faces are nearly parallel
     // (a hull's face on a box's, tilted 1e-9 rad) its nearest face may be any within its
@@ -442,7 +442,7 @@ ContactResultT<typename A::Scalar> contact_in_range(
         refined = witnessed = true;
       }
     }
-    if (tolerances.refine_curved_normals && !epa.degenerate && !witnessed) {
+    if (tolerances.refine_curved_normals && !epa.degenerate && !witnessed && !refined) {
       auto least = detail::SupportMinimum<S>::at(diff, n, result.iterations);
       const auto rounding = [&] {
         return S(2) * std::max(detail::support_rounding(least.vertex),

@@ -4,10 +4,17 @@
 // support value of A - B over all directions), which knows nothing of that root. GJK and EPA,
 // which these pairs took before, were within 1e-10 of the size, took 1 to 70 us, and answered a
 // sphere deep inside a nearly round ellipsoid only at EPA's cap (`iteration_limit`).
+// Ellipsoids against each other or a box take EPA, which stops once Newton's normal is proven by
+// the cores' inner ball (epa/inner_ball.hpp): the ball, and round ellipsoids whose depth is a
+// sphere pair's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <random>
+#include <string>
 
 #include "mink/mink.hpp"
 #include "oracle/curved.hpp"
@@ -135,6 +142,83 @@ TEST(ContactEllipsoid, CentreOnTheShortestAxesPlaneLeavesIt) {
   EXPECT_FALSE(above.normal_chosen);
   EXPECT_GT(above.point_a.z(), 0);
   EXPECT_NEAR(above.depth, depth, 1e-9);
+}
+
+TEST(ContactEllipsoid, InnerBallFitsInside) {
+  // The ball of InnerBall's radius touching an ellipsoid at a boundary point from inside lies in
+  // it: points of the ball's sphere in 64 directions, in the ellipsoid's implicit form. And it is
+  // the largest: 1 % larger, it pokes out beside the ends of the longest axis.
+  std::mt19937_64 rng(20261205);
+  std::uniform_real_distribution<double> unit(-1, 1), extent(0.05, 2.0);
+  for (int i = 0; i < 200; ++i) {
+    const mink::Ellipsoid e{Vec3(extent(rng), extent(rng), extent(rng))};
+    const double ball = mink::detail::InnerBall<mink::Ellipsoid>::radius(e);
+    ASSERT_GT(ball, 0.0);
+    const auto implicit = [&](const Vec3& p) { return p.cwiseQuotient(e.radii).squaredNorm(); };
+    for (int j = 0; j < 20; ++j) {
+      const Vec3 d = Vec3(unit(rng), unit(rng), unit(rng)).normalized();
+      const Vec3 touch = e.support_core(d);
+      // The outward normal there: the gradient of the implicit form.
+      const Vec3 n = touch.cwiseQuotient(e.radii.cwiseProduct(e.radii)).normalized();
+      const Vec3 centre = touch - ball * n;
+      for (int k = 0; k < 64; ++k) {
+        const Vec3 u = Vec3(unit(rng), unit(rng), unit(rng)).normalized();
+        EXPECT_LE(implicit(centre + ball * u), 1 + 1e-12) << "ellipsoid " << i;
+      }
+    }
+    // Near the tip, in the plane of the longest and shortest axes, where the surface curves most.
+    int longest = 0, shortest = 0;
+    e.radii.maxCoeff(&longest);
+    e.radii.minCoeff(&shortest);
+    if (longest == shortest) continue;  // a sphere: every ball of its radius fits exactly
+    const double larger = 1.01 * ball;
+    Vec3 centre = Vec3::Zero();
+    centre[longest] = e.radii[longest] - larger;
+    double most = 0;
+    for (int k = 1; k <= 400; ++k) {
+      Vec3 u = Vec3::Zero();
+      u[longest] = std::cos(1e-3 * k);
+      u[shortest] = std::sin(1e-3 * k);
+      most = std::max(most, implicit(centre + larger * u));
+    }
+    EXPECT_GT(most, 1.0) << "ellipsoid " << i;
+  }
+}
+
+TEST(ContactEllipsoid, RoundEllipsoidsOverlapLikeSpheres) {
+  // Ellipsoids with three equal radii, turned at random, overlapping: EPA on their cores (not the
+  // spheres' closed form), the depth rA + rB - |cB - cA| along the line of centres, the points
+  // that far along it from each centre. Within the inner balls (every depth here), the ball
+  // proves Newton's answer; both orders, and every fourth pair 1e3 from the origin.
+  std::mt19937_64 rng(20261206);
+  std::uniform_real_distribution<double> unit(-1, 1), extent(0.2, 1.5), overlap(1e-4, 0.9);
+  double worst = 0;
+  for (int i = 0; i < 300; ++i) {
+    const double ra = extent(rng), rb = extent(rng);
+    const Vec3 offset = i % 4 == 0 ? Vec3(1e3, 5e2, -2e3) : Vec3::Zero();
+    const Vec3 along = Vec3(unit(rng), unit(rng), unit(rng)).normalized();
+    const double depth = overlap(rng) * std::min(ra, rb);
+    const auto turn = [&] {
+      return mink::Quat(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
+    };
+    const Pose pa = Pose::from(offset, turn());
+    const Pose pb = Pose::from(offset + (ra + rb - depth) * along, turn());
+    const mink::Ellipsoid a{Vec3(ra, ra, ra)}, b{Vec3(rb, rb, rb)};
+    const bool swap = i % 2 == 1;
+    const auto r = swap ? mink::contact(b, pb, a, pa) : mink::contact(a, pa, b, pb);
+    SCOPED_TRACE("pair " + std::to_string(i));
+    ASSERT_EQ(r.status, mink::Status::Intersecting);
+    const double size = ra + rb;
+    const Vec3 normal = swap ? Vec3(-along) : along;
+    const Vec3 on_a = offset + ra * along, on_b = pb.translation - rb * along;
+    const double rounding = 8 * std::numeric_limits<double>::epsilon() * offset.norm();
+    worst = std::max({worst, std::abs(r.depth - depth) / size, (r.normal - normal).norm()});
+    EXPECT_LE(std::abs(r.depth - depth), 1e-13 * size + rounding);
+    EXPECT_LE((r.normal - normal).norm(), 1e-13 + rounding / size);
+    EXPECT_LE(((swap ? r.point_b : r.point_a) - on_a).norm(), 1e-12 * size + rounding);
+    EXPECT_LE(((swap ? r.point_a : r.point_b) - on_b).norm(), 1e-12 * size + rounding);
+  }
+  std::printf("round ellipsoids: worst depth or normal %.2e\n", worst);
 }
 
 }  // namespace
