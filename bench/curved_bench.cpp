@@ -163,6 +163,17 @@ std::shared_ptr<fcl::ShapeBased> fcl_shape(const Solid& s) {
   return nullptr;
 }
 
+/// The pair with each library's shapes (Bullet has no ellipsoid).
+Pair& with_peer_shapes(Pair& p) {
+  if (p.a.kind != Kind::Ellipsoid && p.b.kind != Kind::Ellipsoid) {
+    p.bullet_a = bullet_shape(p.a);
+    p.bullet_b = bullet_shape(p.b);
+  }
+  p.fcl_a = fcl_shape(p.a);
+  p.fcl_b = fcl_shape(p.b);
+  return p;
+}
+
 std::vector<Pair> make_pairs(Family family) {
   std::mt19937_64 rng(11 + static_cast<int>(family));
   std::uniform_real_distribution<double> length(0.3, 1.5), unit(-1, 1), exponent(-3, 0);
@@ -195,13 +206,7 @@ std::vector<Pair> make_pairs(Family family) {
     p.on_b = p.on_a + p.gap * n;
     const Vec3 local_b = p.b.support(qb.toRotationMatrix().transpose() * -n);
     p.pb = Pose::from(Vec3(p.on_b - qb.toRotationMatrix() * local_b), qb);
-    if (family != Family::Ellipsoids) {
-      p.bullet_a = bullet_shape(p.a);
-      p.bullet_b = bullet_shape(p.b);
-    }
-    p.fcl_a = fcl_shape(p.a);
-    p.fcl_b = fcl_shape(p.b);
-    pairs.push_back(p);
+    pairs.push_back(with_peer_shapes(p));
   }
   return pairs;
 }
@@ -295,13 +300,7 @@ std::vector<Pair> make_penetrating_pairs(Family family) {
     p.on_b = p.on_a - p.gap * n;
     p.pb.rotation = rb;
     p.pb.translation = p.on_b - rb * local_b;
-    if (family != Family::EllipsoidsPen) {
-      p.bullet_a = bullet_shape(p.a);
-      p.bullet_b = bullet_shape(p.b);
-    }
-    p.fcl_a = fcl_shape(p.a);
-    p.fcl_b = fcl_shape(p.b);
-    pairs.push_back(p);
+    pairs.push_back(with_peer_shapes(p));
   }
   return pairs;
 }

@@ -394,6 +394,22 @@ ContactResultT<typename A::Scalar> contact_in_range(
   S core_depth = std::max(S(0), epa.depth);
   Vec3T<S> on_a = epa.a, on_b = epa.b;
   bool refined = epa.proven_by_ball;  // Newton's steps have run, and the ball proved them
+  // A face's normal near n and the features' witness pair along it (detail::witness_at_face()),
+  // taken when its points lie on their support planes and its value is EPA's depth within EPA's
+  // tolerance; whether it was.
+  const auto take_witness_at_face = [&] {
+    detail::SupportMinimum<S> pair;
+    if (!detail::witness_at_face(diff, n, size, result.iterations, pair) ||
+        !detail::pair_on_support_planes(pair) ||
+        !(std::abs(pair.value - core_depth) <= tolerances.relative_depth * size))
+      return false;
+    n = pair.normal;
+    core_depth = std::max(S(0), pair.value);
+    on_a = pair.vertex.a;
+    on_b = pair.vertex.b;
+    detail::share_residual(on_a, on_b, n, core_depth);
+    return true;
+  };
   if constexpr (!detail::kCurvedPair<A, B>) {
     // Polytopes: EPA's normal is a face of A - B, exact, but where two faces are nearly parallel
     // (a hull's face on a box's, tilted 1e-9 rad) its nearest face may be any within its
@@ -401,18 +417,8 @@ ContactResultT<typename A::Scalar> contact_in_range(
     // corner. Only there is its bracket left open beyond rounding (never in the benchmark's
     // random pairs); a face's normal and the features' witness pair (witness_at_face()).
     if (!epa.degenerate && epa.status == Status::Intersecting &&
-        epa.upper - epa.lower > S(64) * std::numeric_limits<S>::epsilon() * size) {
-      detail::SupportMinimum<S> pair;
-      if (detail::witness_at_face(diff, n, size, result.iterations, pair) &&
-          detail::pair_on_support_planes(pair) &&
-          std::abs(pair.value - core_depth) <= tolerances.relative_depth * size) {
-        n = pair.normal;
-        core_depth = std::max(S(0), pair.value);
-        on_a = pair.vertex.a;
-        on_b = pair.vertex.b;
-        detail::share_residual(on_a, on_b, n, core_depth);
-      }
-    }
+        epa.upper - epa.lower > S(64) * std::numeric_limits<S>::epsilon() * size)
+      take_witness_at_face();
   }
   if constexpr (detail::kCurvedPair<A, B>) {
     // Curved cores: EPA's normal of a smooth minimum is good to the square root of its tolerance
@@ -429,19 +435,8 @@ ContactResultT<typename A::Scalar> contact_in_range(
     // features' witness pair along it (witness_at_face()), when one of them is a single point or
     // two edges cross; otherwise Newton's steps as elsewhere.
     bool witnessed = false;
-    if (tolerances.refine_curved_normals && epa.on_facet) {
-      detail::SupportMinimum<S> pair;
-      if (detail::witness_at_face(diff, n, size, result.iterations, pair) &&
-          detail::pair_on_support_planes(pair) &&
-          std::abs(pair.value - core_depth) <= tolerances.relative_depth * size) {
-        n = pair.normal;
-        core_depth = std::max(S(0), pair.value);
-        on_a = pair.vertex.a;
-        on_b = pair.vertex.b;
-        detail::share_residual(on_a, on_b, n, core_depth);
-        refined = witnessed = true;
-      }
-    }
+    if (tolerances.refine_curved_normals && epa.on_facet)
+      refined = witnessed = take_witness_at_face();
     if (tolerances.refine_curved_normals && !epa.degenerate && !witnessed && !refined) {
       auto least = detail::SupportMinimum<S>::at(diff, n, result.iterations);
       const auto rounding = [&] {
