@@ -172,7 +172,7 @@ struct EpaOutcome {
   int iterations = 0;                   ///< support calls
   bool degenerate = false;  ///< A - B is flat, a segment or a point: the normal was chosen
   /// Converged on a facet of A - B (on_facet(), below): depth and normal are exact to rounding,
-  /// and contact() does not refine them.
+  /// and contact() takes the features' witness pair along the normal instead of Newton's steps.
   bool on_facet = false;
   /// Closed by Newton's steps and the cores' inner ball (inner_ball.hpp): depth, normal and
   /// points are exact to rounding.
