@@ -83,15 +83,19 @@ inline constexpr bool kInnerBallPair = InnerBall<A>::kMay || InnerBall<B>::kMay;
 
 /// Whether the inner balls of the cores (radii `ball_a`, `ball_b`) prove the depth along the
 /// unit normal of `least` (Newton's answer: its vertex a witness pair) within `tolerance` (unit:
-/// length). One support call along the normal (counted in `iterations`) gives h(n), the upper
-/// bound, and the points where the balls touch; a core without a ball keeps the pair's point.
-/// On success `least` holds that support value, the normal and the points, and `lower` the
-/// proven lower bound.
+/// length), with the points' offset across the normal within `witness_gap` (unit: length). One
+/// support call along the normal (counted in `iterations`) gives h(n), the upper bound, and the
+/// points where the balls touch; a core without a ball keeps the pair's point. On success
+/// `least` holds that support value, the normal and the points, and `lower` the proven lower
+/// bound. The bracket alone allows an offset t with t^2 <= 2 (R - h) tolerance (6e-7 of the
+/// size on a probe's box and ellipsoid 0.03 across, though Newton's steps left 2e-12), and the
+/// points, shared along the normal, move by t / 2: on a box's edge, off the box at first order.
+/// The gap is what Newton's witness pairs keep elsewhere (is_witness_pair()).
 template <ConvexShape A, ConvexShape B>
 bool inner_ball_proves_depth(const CoreDifference<A, B>& diff, typename A::Scalar ball_a,
                              typename A::Scalar ball_b, typename A::Scalar tolerance,
-                             int& iterations, SupportMinimum<typename A::Scalar>& least,
-                             typename A::Scalar& lower) {
+                             typename A::Scalar witness_gap, int& iterations,
+                             SupportMinimum<typename A::Scalar>& least, typename A::Scalar& lower) {
   using S = typename A::Scalar;
   const Vec3T<S> n = least.normal;
   SimplexVertexT<S> along;
@@ -101,8 +105,11 @@ bool inner_ball_proves_depth(const CoreDifference<A, B>& diff, typename A::Scala
   const Vec3T<S> a = ball_a > S(0) ? along.a : least.vertex.a;
   const Vec3T<S> b = ball_b > S(0) ? along.b : least.vertex.b;
   const S ball = ball_a + ball_b;
-  const S proven = ball - length_of(Vec3T<S>(a - b - ball * n));
-  if (!(std::isfinite(upper) && proven > S(0) && upper - proven <= tolerance)) return false;
+  const Vec3T<S> offset = a - b;
+  const S proven = ball - length_of(Vec3T<S>(offset - ball * n));
+  if (!(std::isfinite(upper) && proven > S(0) && upper - proven <= tolerance &&
+        length_of(Vec3T<S>(offset - n.dot(offset) * n)) <= witness_gap))
+    return false;
   least.value = upper;
   least.vertex.a = a;
   least.vertex.b = b;
@@ -131,18 +138,20 @@ bool newton_proves_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
                          typename A::Scalar ball_b, int& iterations,
                          SupportMinimum<typename A::Scalar>& least, typename A::Scalar& lower) {
   using S = typename A::Scalar;
-  const S bracket = tol.relative * size;
+  const S bracket = tol.relative * size, witness_gap = tol.relative_depth * size;
   SupportFeatureT<S> feature_a, feature_b;
   core_features(diff, least.normal, S(kInnerBallFaceReach) * size, feature_a, feature_b);
   SupportMinimum<S> at_face = least;
   if (snap_to_face(diff, feature_a, feature_b, iterations, at_face) &&
       feature_witness(diff, size, iterations, at_face) &&
-      inner_ball_proves_depth(diff, ball_a, ball_b, bracket, iterations, at_face, lower)) {
+      inner_ball_proves_depth(diff, ball_a, ball_b, bracket, witness_gap, iterations, at_face,
+                              lower)) {
     least = at_face;
     return true;
   }
   newton_on_support(diff, size, tol.relative_depth * size, kNewtonMaxSteps, iterations, least);
-  return inner_ball_proves_depth(diff, ball_a, ball_b, bracket, iterations, least, lower);
+  return inner_ball_proves_depth(diff, ball_a, ball_b, bracket, witness_gap, iterations, least,
+                                 lower);
 }
 
 }  // namespace mink::detail
