@@ -15,7 +15,7 @@
 // solver, and libccd's MPR, which fcl::collide runs). B's point lies `depth` inside A's support
 // plane instead, at a point where a ball of radius r fits inside B touching there (an ellipsoid's
 // c^2 / a anywhere; a cylinder's min(radius, half height - |z|) at a point of its side at height
-// z, the normal across its axis), and likewise r' in A (0 for a box's face), with depth <= r + r'.
+// z, the normal across its axis), and likewise r' in A (0 for a box's edge), with depth <= r + r'.
 // Then A - B holds a ball of radius r + r' touching its boundary at the two points' difference,
 // depth n, whose distance from the origin is at least r + r' - |depth - r - r'| = depth, while
 // moving B by depth along n separates them: the depth is exact, n the normal, and the two points
