@@ -129,19 +129,19 @@ TEST(ContactCurvedNormal, LowestPointSunkInAFaceIsExact) {
         (Eigen::AngleAxisd(tilt(rng), mink::Vec3(std::cos(heading), std::sin(heading), 0)) *
          Eigen::AngleAxisd(pi * unit(rng), mink::Vec3::UnitZ()))
             .toRotationMatrix();
-    // The shape's lowest point, from its definition: the rim point along -z in its frame (a
-    // cylinder's on the cap facing down), a cone's apex when that reaches lower, an ellipsoid's
-    // D^2 d / |D d| for D = diag(radii) and d = -z.
-    const mink::Vec3 down = rotation.transpose() * mink::Vec3(0, 0, -1);
-    const double across = std::hypot(down.x(), down.y());
-    mink::Vec3 lowest(radius * down.x() / across, radius * down.y() / across,
-                      kind == 1 || down.z() < 0 ? -half_height : half_height);
-    if (kind == 1 && down.z() * half_height > down.dot(lowest))
-      lowest = mink::Vec3(0, 0, half_height);
-    if (kind == 2) {
-      const mink::Vec3 scaled = radii.cwiseProduct(down);
-      lowest = radii.cwiseProduct(scaled) / scaled.norm();
-    }
+    // The shape's lowest point, from its definition (the oracle's support point along -z in its
+    // frame: a cylinder's rim on the cap facing down, a cone's apex when that reaches lower).
+    CurvedShape described;
+    described.kind = kind == 0   ? CurvedKind::Cylinder
+                     : kind == 1 ? CurvedKind::Cone
+                                 : CurvedKind::Ellipsoid;
+    described.radius = radius;
+    described.half_height = half_height;
+    described.extents = radii.cast<Real>();
+    const mink::Vec3 lowest =
+        oracle::local_support_point(described,
+                                    V3((rotation.transpose() * mink::Vec3(0, 0, -1)).cast<Real>()))
+            .cast<double>();
     const double delta = std::pow(10.0, exponent(rng));
     const mink::Vec3 offset = i % 4 == 0 ? mink::Vec3(1e3, -2e3, 5e2) : mink::Vec3::Zero();
     const mink::Vec3 deepest = mink::Vec3(lateral(rng), lateral(rng), 0.5 - delta) + offset;
