@@ -174,15 +174,22 @@ Pair& with_peer_shapes(Pair& p) {
   return p;
 }
 
+/// A random unit vector, uniform over the sphere, and a random turn.
+Vec3 random_unit(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(-1, 1);
+  Vec3 v;
+  do v = Vec3(unit(rng), unit(rng), unit(rng));
+  while (v.squaredNorm() > 1 || v.squaredNorm() < 1e-4);
+  return v.normalized();
+}
+mink::Quat random_turn(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(-1, 1);
+  return mink::Quat(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
+}
+
 std::vector<Pair> make_pairs(Family family) {
   std::mt19937_64 rng(11 + static_cast<int>(family));
   std::uniform_real_distribution<double> length(0.3, 1.5), unit(-1, 1), exponent(-3, 0);
-  auto random_unit = [&] {
-    Vec3 v;
-    do v = Vec3(unit(rng), unit(rng), unit(rng));
-    while (v.squaredNorm() > 1 || v.squaredNorm() < 1e-4);
-    return Vec3(v.normalized());
-  };
   auto solid = [&](Kind kind) {
     Solid s{kind, Vec3::Zero()};
     const double r = length(rng);
@@ -197,10 +204,10 @@ std::vector<Pair> make_pairs(Family family) {
                 : family == Family::ConeCylinder ? Kind::Cone
                                                  : Kind::Ellipsoid);
     p.b = solid(family == Family::Ellipsoids ? Kind::Ellipsoid : Kind::Cylinder);
-    const mink::Quat qa = mink::Quat(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
-    const mink::Quat qb = mink::Quat(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
+    const mink::Quat qa = random_turn(rng);
+    const mink::Quat qb = random_turn(rng);
     p.pa = Pose::from(Vec3(unit(rng), unit(rng), unit(rng)), qa);
-    const Vec3 n = random_unit();
+    const Vec3 n = random_unit(rng);
     p.gap = (p.a.size() + p.b.size()) * std::pow(10.0, exponent(rng));
     p.on_a = p.pa.apply(p.a.support(p.pa.rotation.transpose() * n));
     p.on_b = p.on_a + p.gap * n;
@@ -216,18 +223,9 @@ std::vector<Pair> make_pairs(Family family) {
 std::vector<Pair> make_penetrating_pairs(Family family) {
   std::mt19937_64 rng(23 + static_cast<int>(family));
   std::uniform_real_distribution<double> length(0.3, 1.5), unit(-1, 1), exponent(-4, 0);
-  auto random_unit = [&] {
-    Vec3 v;
-    do v = Vec3(unit(rng), unit(rng), unit(rng));
-    while (v.squaredNorm() > 1 || v.squaredNorm() < 1e-4);
-    return Vec3(v.normalized());
-  };
-  auto random_turn = [&] {
-    return mink::Quat(unit(rng), unit(rng), unit(rng), unit(rng)).normalized().toRotationMatrix();
-  };
   // A turn that takes local z onto unit `axis`.
   auto frame_about = [&](const Vec3& axis) {
-    const Vec3 x = random_unit().cross(axis).normalized();
+    const Vec3 x = random_unit(rng).cross(axis).normalized();
     mink::Mat3 r;
     r.col(0) = x;
     r.col(1) = axis.cross(x);
@@ -236,7 +234,7 @@ std::vector<Pair> make_penetrating_pairs(Family family) {
   };
   // One that takes local z across unit n (a cylinder's axis across the normal).
   auto axis_across = [&](const Vec3& n) {
-    return frame_about(Vec3(random_unit().cross(n).normalized()));
+    return frame_about(Vec3(random_unit(rng).cross(n).normalized()));
   };
   // A cylinder's point of its side along local d (d across its axis) at height z, and the radius
   // of the ball inside it that touches there.
@@ -248,15 +246,15 @@ std::vector<Pair> make_penetrating_pairs(Family family) {
   std::vector<Pair> pairs;
   for (int k = 0; k < kPairs; ++k) {
     Pair p;
-    const Vec3 n = random_unit();
+    const Vec3 n = random_unit(rng);
     double ball_a = 0, ball_b = 0;
     mink::Mat3 ra, rb;
     Vec3 local_a, local_b;
     if (family == Family::EllipsoidsPen) {
       for (Solid* e : {&p.a, &p.b})
         *e = {Kind::Ellipsoid, Vec3(length(rng), length(rng), length(rng))};
-      ra = random_turn();
-      rb = random_turn();
+      ra = random_turn(rng).toRotationMatrix();
+      rb = random_turn(rng).toRotationMatrix();
       local_a = p.a.support(ra.transpose() * n);
       local_b = p.b.support(rb.transpose() * -n);
       for (const Solid* e : {&p.a, &p.b}) {
@@ -276,7 +274,7 @@ std::vector<Pair> make_penetrating_pairs(Family family) {
         p.a = {Kind::Box, Vec3(length(rng), length(rng), length(rng))};
         std::uniform_real_distribution<double> phi_of(0.1, 1.47), psi_of(0.2, 1.37);
         const double phi = phi_of(rng), psi = psi_of(rng) * (unit(rng) < 0 ? -1 : 1);
-        const Vec3 edge = random_unit().cross(n).normalized(), w = edge.cross(n);
+        const Vec3 edge = random_unit(rng).cross(n).normalized(), w = edge.cross(n);
         ra.col(0) = edge;
         ra.col(1) = std::cos(phi) * n - std::sin(phi) * w;
         ra.col(2) = std::sin(phi) * n + std::cos(phi) * w;
