@@ -19,6 +19,7 @@
 #include "mink/gjk/support_newton.hpp"
 #include "mink/math/orthogonal.hpp"
 #include "mink/query/point_solid.hpp"
+#include "mink/support/core_terms.hpp"
 #include "mink/support/shape.hpp"
 
 namespace mink::detail {
@@ -72,34 +73,18 @@ bool with_solid(const T& shape, Fn&& fn) {
   return false;
 }
 
-/// Cores that may have a corner: a point whose normal cone has an inside. An ellipsoid's normal
-/// cones are rays, a cylinder's rays or (on a rim) flat wedges, and a sum's are the meets of its
-/// terms', so a sum with one of them has none either: corner_solid_pair() does not look for a
-/// corner on them (for two ellipsoids, that look was a third of distance()'s time, all of it in
-/// the nearest points of the turned support points).
+/// Primitive cores that may have a corner: a point whose normal cone has an inside. An
+/// ellipsoid's normal cones are rays, a cylinder's rays or (on a rim) flat wedges, and a sum's are
+/// the meets of its terms', so a sum with one of them has none either (every_term(),
+/// support/core_terms.hpp): corner_solid_pair() does not look for a corner on them (for two
+/// ellipsoids, that look was a third of distance()'s time, all of it in the nearest points of the
+/// turned support points).
 template <class T>
 struct CornerCore : std::true_type {};
 template <class S>
 struct CornerCore<CylinderT<S>> : std::false_type {};
 template <class S>
 struct CornerCore<EllipsoidT<S>> : std::false_type {};
-template <class T>
-struct CornerCore<Rounded<T>> : CornerCore<T> {};
-template <class X, class Y>
-struct CornerCore<MinkowskiSum<X, Y>>
-    : std::bool_constant<CornerCore<X>::value && CornerCore<Y>::value> {};
-
-/// Whether `core` may have a corner (CornerCore); a run-time Shape asks each of its terms.
-template <ConvexShape T>
-bool may_have_corner(const T& core) {
-  if constexpr (std::is_same_v<T, Shape>) {
-    for (const Core& term : core.cores())
-      if (!visit_core(term, [](const auto& c) { return may_have_corner(c); })) return false;
-    return true;
-  } else {
-    return CornerCore<T>::value;
-  }
-}
 
 /// A corner of one core and its nearest point on the other, a solid, as witness points of cores
 /// apart: A's point, B's point and the unit normal from A to B, in A's frame.
@@ -146,7 +131,7 @@ std::optional<CornerSolidPair<typename A::Scalar>> no_higher(
 /// off. Five support calls of a core for each side tried (nine where the point is no corner), one
 /// more for each point tried without the corner test, one of A - B for a pair found, counted in
 /// `iterations`. Nothing when no core is a solid facing one that may have a corner
-/// (may_have_corner()), when no point tried is outside the solid, or when no pair is kept.
+/// (every_term<CornerCore>()), when no point tried is outside the solid, or when no pair is kept.
 template <ConvexShape A, ConvexShape B>
 std::optional<CornerSolidPair<typename A::Scalar>> corner_solid_pair(
     const CoreDifference<A, B>& diff, const SupportMinimum<typename A::Scalar>& at_normal,
@@ -189,7 +174,7 @@ std::optional<CornerSolidPair<typename A::Scalar>> corner_solid_pair(
   // B a solid, A's support point a corner. Taken again, not from `at_normal`: Newton's witness
   // there may be a point placed from B's (feature_witness()), which the turned support
   // points would never equal.
-  if (may_have_corner(diff.a))
+  if (every_term<CornerCore>(diff.a))
     with_solid(diff.b, [&](auto solid_core, const auto& solid) {
       using Solid = typename decltype(solid_core)::type;
       try_core(diff.a, normal, [&](const V& corner, CornerSolidPair<S>& pair, V& pair_d) {
@@ -204,7 +189,7 @@ std::optional<CornerSolidPair<typename A::Scalar>> corner_solid_pair(
     });
   if (out) return no_higher(diff, at_normal, std::move(out), iterations);
   // A a solid, B's support point a corner.
-  if (may_have_corner(diff.b))
+  if (every_term<CornerCore>(diff.b))
     with_solid(diff.a, [&](auto solid_core, const auto& solid) {
       using Solid = typename decltype(solid_core)::type;
       try_core(diff.b, V(diff.rotation.transpose() * -normal),

@@ -13,6 +13,7 @@
 #include "mink/gjk/segment_cores.hpp"
 #include "mink/gjk/support_descent.hpp"
 #include "mink/gjk/support_newton.hpp"
+#include "mink/support/core_terms.hpp"
 
 namespace mink::detail {
 
@@ -215,7 +216,7 @@ bool close_at_feature_segments(const CoreDifference<A, B>& diff, typename A::Sca
 /// which Newton's steps converge quadratically.
 inline constexpr double kHandOffGap = 1e-6;
 
-/// Cores whose pairs gjk_apart() hands over to Newton's steps: all but those holding a cone. A
+/// Primitive cores whose pairs gjk_apart() hands over to Newton's steps: all but a cone. A
 /// cone's apex is a kink of h that Newton's steps from the loose run's normal (1e-3 rad off)
 /// did not cross: 14 to 30 % of the pairs with a cone apart fell back to the full run, and the
 /// pairs took 20-30 % more support calls than without the hand-off.
@@ -223,33 +224,14 @@ template <class T>
 struct NewtonHandOffCore : std::true_type {};
 template <class S>
 struct NewtonHandOffCore<ConeT<S>> : std::false_type {};
-template <class T>
-struct NewtonHandOffCore<Rounded<T>> : NewtonHandOffCore<T> {};
-template <class X, class Y>
-struct NewtonHandOffCore<MinkowskiSum<X, Y>>
-    : std::bool_constant<NewtonHandOffCore<X>::value && NewtonHandOffCore<Y>::value> {};
 
-/// Whether `core` allows the hand-off (NewtonHandOffCore); `curved` is set when it is or holds a
-/// curved core. A run-time Shape asks each of its terms.
-template <ConvexShape T>
-bool allows_newton_hand_off(const T& core, bool& curved) {
-  if constexpr (std::is_same_v<T, Shape>) {
-    for (const Core& term : core.cores())
-      if (!visit_core(term, [&curved](const auto& c) { return allows_newton_hand_off(c, curved); }))
-        return false;
-    return true;
-  } else {
-    curved |= CurvedCore<T>::value;
-    return NewtonHandOffCore<T>::value;
-  }
-}
-
-/// Whether gjk_apart() hands the pair over to Newton's steps: both cores allow it, and one of
-/// them is curved (kCurvedPair holds for every Shape, and a sum of polytopes gains nothing).
+/// Whether gjk_apart() hands the pair over to Newton's steps: every term of both cores allows it
+/// (support/core_terms.hpp), and one of them is curved (kCurvedPair holds for every Shape, and a
+/// sum of polytopes gains nothing).
 template <ConvexShape A, ConvexShape B>
 bool hands_off_to_newton(const A& a, const B& b) {
-  bool curved = false;
-  return allows_newton_hand_off(a, curved) && allows_newton_hand_off(b, curved) && curved;
+  return every_term<NewtonHandOffCore>(a) && every_term<NewtonHandOffCore>(b) &&
+         (any_term<CurvedCore>(a) || any_term<CurvedCore>(b));
 }
 
 /// GJK's outcome on cores that may be apart, for distance() and contact(). Curved cores (with
