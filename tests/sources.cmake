@@ -39,6 +39,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_nasty_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_axial_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_ellipsoid_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_inner_ball_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_curved_normal_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/epa/contact_epa_budget_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/manifold/clip_box_pair_test.cpp

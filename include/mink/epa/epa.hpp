@@ -737,17 +737,16 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   // 2. Expand the face nearest the origin, until the bracket closes.
   SupportMinimum<S> least;  // the least support value seen, its direction and support point
   enum class Step { Expanded, Closed, Stuck, Overflow, ProvenByBall };
-  // Cores with an inner ball (an ellipsoid's): Newton's steps and the ball may close the bracket
-  // once EPA's is within kInnerBallHandOff of the size (inner_ball.hpp). Only where contact()
-  // would refine the normal with Newton's steps anyway.
-  S ball_a = S(0), ball_b = S(0), ball_lower = S(0);
+  // Cores that hold balls (an ellipsoid, a cylinder): Newton's steps and the balls may close the
+  // bracket once EPA's is within kInnerBallHandOff of the size (inner_ball.hpp), for depths within
+  // their reach. Only where contact() would refine the normal with Newton's steps anyway, and
+  // they refine (no cone: hands_off_to_newton()).
+  S ball_reach = S(0), ball_lower = S(0);
   if constexpr (kInnerBallPair<A, B>) {
-    if (tol.refine_curved_normals) {
-      ball_a = InnerBall<A>::radius(diff.a);
-      ball_b = InnerBall<B>::radius(diff.b);
-    }
+    if (tol.refine_curved_normals && hands_off_to_newton(diff.a, diff.b))
+      ball_reach = InnerBall<A>::reach(diff.a) + InnerBall<B>::reach(diff.b);
   }
-  bool try_ball = ball_a + ball_b > S(0);
+  bool try_ball = ball_reach > S(0);
   // Samples A - B along face f's normal, keeps the least support value seen, and pushes f out
   // unless it already lies on the boundary of A - B.
   auto step = [&](int f) {
@@ -762,10 +761,9 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
       // try.
       if (try_ball && least.value - face.offset / length <= S(kInnerBallHandOff) * size) {
         try_ball = false;
-        if (face.offset / length < ball_a + ball_b) {
+        if (face.offset / length < ball_reach) {
           SupportMinimum<S> trial = least;
-          if (newton_proves_depth(diff, size, tol, ball_a, ball_b, out.iterations, trial,
-                                  ball_lower)) {
+          if (newton_proves_depth(diff, size, tol, out.iterations, trial, ball_lower)) {
             least = trial;
             return Step::ProvenByBall;
           }
