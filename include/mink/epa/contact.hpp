@@ -438,15 +438,19 @@ ContactResultT<typename A::Scalar> contact_in_range(
     if (tolerances.refine_curved_normals && epa.on_facet)
       refined = witnessed = take_witness_at_face();
     if (tolerances.refine_curved_normals && !epa.degenerate && !witnessed && !refined) {
-      auto least = detail::SupportMinimum<S>::at(diff, n, result.iterations);
-      const auto rounding = [&] {
+      const auto rounding = [&](const detail::SupportMinimum<S>& least) {
         return S(2) * std::max(detail::support_rounding(least.vertex),
                                S(16) * std::numeric_limits<S>::epsilon() *
                                    diff.translation.cwiseAbs().maxCoeff());
       };
-      if (detail::newton_on_support(diff, size, tolerances.relative_depth * size,
-                                    detail::kNewtonMaxSteps, result.iterations, least) > 0 &&
-          least.value <= epa.upper + rounding()) {
+      // Newton's answer from EPA's hand-off to the balls (epa.hpp), when as deep as EPA's upper
+      // end; else the steps from EPA's final normal.
+      const bool early = epa.newton_ran && epa.newton.value <= epa.upper + rounding(epa.newton);
+      auto least = early ? epa.newton : detail::SupportMinimum<S>::at(diff, n, result.iterations);
+      if ((early ||
+           detail::newton_on_support(diff, size, tolerances.relative_depth * size,
+                                     detail::kNewtonMaxSteps, result.iterations, least) > 0) &&
+          least.value <= epa.upper + rounding(least)) {
         n = least.normal;
         core_depth = std::max(S(0), least.value);
         on_a = least.vertex.a;

@@ -177,6 +177,10 @@ struct EpaOutcome {
   /// Closed by Newton's steps and the cores' inner ball (inner_ball.hpp): depth, normal and
   /// points are exact to rounding.
   bool proven_by_ball = false;
+  /// Newton's steps ran for the balls, kept steps, and the balls did not prove them: their answer
+  /// (support value, unit normal, witness pair), for contact()'s refinement.
+  bool newton_ran = false;
+  SupportMinimum<S> newton;
 };
 
 /// How far inside its face of P (relative to the size) the origin's projection must lie for
@@ -763,9 +767,15 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
         try_ball = false;
         if (face.offset / length < ball_reach) {
           SupportMinimum<S> trial = least;
-          if (newton_proves_depth(diff, size, tol, out.iterations, trial, ball_lower)) {
+          int newton_kept = 0;
+          if (newton_proves_depth(diff, size, tol, out.iterations, trial, ball_lower,
+                                  newton_kept)) {
             least = trial;
             return Step::ProvenByBall;
+          }
+          if (newton_kept > 0) {
+            out.newton_ran = true;
+            out.newton = trial;
           }
         }
       }

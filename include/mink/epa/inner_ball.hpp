@@ -292,11 +292,14 @@ inline constexpr double kInnerBallFaceReach = 1e-2;
 /// kink of h in every direction, where Newton's steps spent all their budget (8 steps, 24-32
 /// support calls) on a box's face against an ellipsoid without reaching it. Else Newton's steps
 /// (newton_on_support()). Support calls are counted in `iterations`; `least` and `lower` are
-/// set on success.
+/// set on success. `newton_kept` receives the steps Newton's search kept (0: none ran or none
+/// kept): on failure `least` then holds its answer, which contact() takes instead of searching
+/// again from EPA's final normal when it is as deep as EPA's upper end.
 template <ConvexShape A, ConvexShape B>
 bool newton_proves_depth(const CoreDifference<A, B>& diff, typename A::Scalar size,
                          const TolerancesT<typename A::Scalar>& tol, int& iterations,
-                         SupportMinimum<typename A::Scalar>& least, typename A::Scalar& lower) {
+                         SupportMinimum<typename A::Scalar>& least, typename A::Scalar& lower,
+                         int& newton_kept) {
   using S = typename A::Scalar;
   const S bracket = tol.relative * size, witness_gap = tol.relative_depth * size;
   SupportFeatureT<S> feature_a, feature_b;
@@ -304,6 +307,7 @@ bool newton_proves_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
   // The balls that may touch there must reach as deep as EPA's upper end; else no proof.
   const S reach = (InnerBall<A>::touches(diff.a, feature_a) ? InnerBall<A>::reach(diff.a) : S(0)) +
                   (InnerBall<B>::touches(diff.b, feature_b) ? InnerBall<B>::reach(diff.b) : S(0));
+  newton_kept = 0;
   if (!(least.value < reach)) return false;
   SupportMinimum<S> at_face = least;
   if (snap_to_face(diff, feature_a, feature_b, iterations, at_face) &&
@@ -312,7 +316,8 @@ bool newton_proves_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
     least = at_face;
     return true;
   }
-  newton_on_support(diff, size, tol.relative_depth * size, kNewtonMaxSteps, iterations, least);
+  newton_kept =
+      newton_on_support(diff, size, tol.relative_depth * size, kNewtonMaxSteps, iterations, least);
   return inner_ball_proves_depth(diff, bracket, witness_gap, iterations, least, lower);
 }
 

@@ -194,4 +194,67 @@ TEST(ContactInnerBall, CylinderSidesPenetratingAreExact) {
               worst_depth, worst_normal, worst_point);
 }
 
+TEST(ContactInnerBall, BallsProveASideButNotARim) {
+  // The certificate itself (inner_ball_proves_depth()) at the exact normal and witness pair: a
+  // cylinder along z (A) against a second cylinder along x or a box's edge along x (B), sunk
+  // delta into A's side at the point (0, ra, 0), normal +y. The balls about the two sides (or
+  // about A's side and B's edge as a point) prove delta to rounding. The same box's edge against
+  // A's rim, where no ball touches either core, is not proven.
+  using mink::detail::CoreDifference;
+  using mink::detail::SupportMinimum;
+  const double ra = 0.5, rb = 0.3, half = 3.0;
+  const mink::Cylinder a{ra, half};
+  const mink::Cylinder b{rb, half};
+  const mink::Box box{Vec3(half, rb, rb)};
+  const mink::Mat3 along_x =
+      Eigen::AngleAxisd(std::acos(-1.0) / 2, Vec3::UnitY()).toRotationMatrix();
+  const mink::Mat3 edge_down =
+      Eigen::AngleAxisd(std::acos(-1.0) / 4, Vec3::UnitX()).toRotationMatrix();
+  const mink::Tolerances tol;
+  for (const double delta : {1e-9, 1e-6, 1e-3, 0.1}) {
+    SupportMinimum<double> least;
+    least.normal = Vec3::UnitY();
+    least.value = delta;
+    least.vertex.a = Vec3(0, ra, 0);
+    least.vertex.b = Vec3(0, ra - delta, 0);
+    least.vertex.w = least.vertex.a - least.vertex.b;
+    least.vertex.dir = least.normal;
+    const double size = a.bounding_radius() + b.bounding_radius();
+    int iterations = 0;
+    double lower = 0;
+    const CoreDifference<mink::Cylinder, mink::Cylinder> crossing{a, b, along_x,
+                                                                  Vec3(0, ra + rb - delta, 0)};
+    SupportMinimum<double> on_sides = least;
+    EXPECT_TRUE(mink::detail::inner_ball_proves_depth(
+        crossing, tol.relative * size, tol.relative_depth * size, iterations, on_sides, lower))
+        << "delta " << delta;
+    EXPECT_NEAR(lower, delta, 1e-14);
+    EXPECT_NEAR(on_sides.value, delta, 1e-14);
+    const CoreDifference<mink::Cylinder, mink::Box> edge{
+        a, box, edge_down, Vec3(0, ra - delta + rb * std::sqrt(2.0), 0)};
+    SupportMinimum<double> on_edge = least;
+    EXPECT_TRUE(mink::detail::inner_ball_proves_depth(
+        edge, tol.relative * size, tol.relative_depth * size, iterations, on_edge, lower))
+        << "delta " << delta;
+    EXPECT_NEAR(lower, delta, 1e-14);
+    // A box's edge along y against A's rim at (ra, 0, half), pressed in by delta along the
+    // rim's bisector n = (1, 0, 1) / sqrt 2: no ball touches a rim or an edge, so nothing is
+    // proven, whatever the depth.
+    const Vec3 bisector = Vec3(1, 0, 1).normalized();
+    SupportMinimum<double> at_rim;
+    at_rim.normal = bisector;
+    at_rim.value = delta;
+    at_rim.vertex.a = Vec3(ra, 0, half);
+    at_rim.vertex.b = at_rim.vertex.a - delta * bisector;
+    at_rim.vertex.w = at_rim.vertex.a - at_rim.vertex.b;
+    at_rim.vertex.dir = bisector;
+    const mink::Box short_box{Vec3(rb, 0.05, rb)};
+    const CoreDifference<mink::Cylinder, mink::Box> rim{a, short_box, mink::Mat3::Identity(),
+                                                        Vec3(at_rim.vertex.b + Vec3(rb, 0, rb))};
+    EXPECT_FALSE(mink::detail::inner_ball_proves_depth(
+        rim, tol.relative * size, tol.relative_depth * size, iterations, at_rim, lower))
+        << "delta " << delta;
+  }
+}
+
 }  // namespace inner_ball_test
