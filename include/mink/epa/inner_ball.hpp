@@ -304,9 +304,18 @@ bool newton_proves_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
   const S bracket = tol.relative * size, witness_gap = tol.relative_depth * size;
   SupportFeatureT<S> feature_a, feature_b;
   core_features(diff, least.normal, S(kInnerBallFaceReach) * size, feature_a, feature_b);
-  // The balls that may touch there must reach as deep as EPA's upper end; else no proof.
-  const S reach = (InnerBall<A>::touches(diff.a, feature_a) ? InnerBall<A>::reach(diff.a) : S(0)) +
-                  (InnerBall<B>::touches(diff.b, feature_b) ? InnerBall<B>::reach(diff.b) : S(0));
+  // The balls that may touch there must reach as deep as EPA's upper end; else no proof. A
+  // cylinder's side against a face (a cap's, a box's) is a facet of A - B, which EPA closes
+  // exactly by itself; an ellipsoid's rolling ball proves it sooner.
+  const auto touching = [](bool touches, bool rolling, const SupportFeatureT<S>& other) {
+    return touches && (rolling || other.count < 3);
+  };
+  const bool touch_a = touching(InnerBall<A>::touches(diff.a, feature_a),
+                                InnerBall<A>::radius(diff.a) > S(0), feature_b);
+  const bool touch_b = touching(InnerBall<B>::touches(diff.b, feature_b),
+                                InnerBall<B>::radius(diff.b) > S(0), feature_a);
+  const S reach = (touch_a ? InnerBall<A>::reach(diff.a) : S(0)) +
+                  (touch_b ? InnerBall<B>::reach(diff.b) : S(0));
   newton_kept = 0;
   if (!(least.value < reach)) return false;
   SupportMinimum<S> at_face = least;
