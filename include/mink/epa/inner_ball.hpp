@@ -1,6 +1,7 @@
 /// @file inner_ball.hpp
 /// A lower bound on the penetration depth from a ball inside A - B, which lets EPA stop on
-/// cores that hold an ellipsoid once Newton's steps have found the normal.
+/// cores that hold an ellipsoid, or meet at a cylinder's side, once Newton's steps have found the
+/// normal. (Since stop 89 the balls need not touch at the support points: see balls() below.)
 ///
 /// EPA's lower bound is its polytope's nearest face. On a curved A - B that bound closes
 /// linearly, the polytope refining all round the minimum: two ellipsoids took 30-50 support calls
@@ -53,9 +54,10 @@ struct CoreBall {
 /// boundary point `witness` whose outward unit normal is `normal` (core frame; `support` is the
 /// support point along it) and returns their number. By default one, the rolling ball touching at
 /// the support point. `touches()`: whether one of those balls may touch the core where its support
-/// feature is `feature` (a face, a cylinder's side, any point of an ellipsoid; not a corner, an
-/// edge or a rim, where the proof would fail after Newton's steps). Cores only: EPA runs on them, a
-/// rounded shape's margin apart.
+/// feature is `feature` and close a proof that EPA needs (a cylinder's side, any point of an
+/// ellipsoid; not a corner, an edge or a rim, where the proof would fail after Newton's steps, nor
+/// a face, where EPA closes on a facet by itself). Cores only: EPA runs on them, a rounded shape's
+/// margin apart.
 inline constexpr int kMaxCoreBalls = 3;
 
 template <class T>
@@ -130,7 +132,8 @@ struct InnerBall<CylinderT<S>> {
       out[count++] = {rho - slack, centre};
     }
     return count;
-  }  /// Its side (a segment along the axis): not a rim, nor a cap, where EPA closes on a facet.
+  }
+  /// Its side (a segment along the axis): not a rim, nor a cap, where EPA closes on a facet.
   static bool touches(const CylinderT<S>&, const SupportFeatureT<S>& feature) {
     return feature.count == 2;
   }
@@ -162,7 +165,8 @@ struct InnerBall<BoxT<S>> {
       out[count++] = {rho - slack, centre};
     }
     return count;
-  }  /// Never where the proof is needed: against a face EPA closes on a facet. (Its balls still
+  }
+  /// Never where the proof is needed: against a face EPA closes on a facet. (Its balls still
   /// serve where the other core's touch.)
   static bool touches(const BoxT<S>&, const SupportFeatureT<S>&) { return false; }
 };
