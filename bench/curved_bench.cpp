@@ -68,7 +68,8 @@ enum class Family {
   Ellipsoids,
   BoxCylinderPen,
   CylindersPen,
-  EllipsoidsPen
+  EllipsoidsPen,
+  ParallelCylindersPen
 };
 
 const char* family_name(Family f) {
@@ -85,6 +86,8 @@ const char* family_name(Family f) {
       return "cyl-cyl-pen";
     case Family::EllipsoidsPen:
       return "ellipsoids-pen";
+    case Family::ParallelCylindersPen:
+      return "parallel-cyl-pen";
   }
   return "";
 }
@@ -287,6 +290,14 @@ std::vector<Pair> make_penetrating_pairs(Family family) {
         p.a.extents = Vec3(ra_radius, ra_radius, length(rng));
         ra = axis_across(n);
         local_a = side_point(p.a, ra.transpose() * n, 0.8 * p.a.extents.z() * unit(rng), ball_a);
+        if (family == Family::ParallelCylindersPen) {
+          // Side by side: B's axis A's turned about n by 1e-6 to 1e-2 rad, so the side lines
+          // cross (seen along n) at the deepest points, at a small angle.
+          std::uniform_real_distribution<double> tilt_exponent(-6, -2);
+          const double tilt = std::pow(10.0, tilt_exponent(rng)) * (unit(rng) < 0 ? -1 : 1);
+          rb = frame_about(Eigen::AngleAxisd(tilt, n) * ra.col(2));
+          local_b = side_point(p.b, rb.transpose() * -n, 0.8 * p.b.extents.z() * unit(rng), ball_b);
+        }
       }
     }
     p.penetrating = true;
@@ -416,9 +427,10 @@ const std::vector<Method>& methods() {
   return all;
 }
 
-constexpr Family kFamilies[] = {Family::Cylinders,    Family::ConeCylinder,
-                                Family::Ellipsoids,   Family::BoxCylinderPen,
-                                Family::CylindersPen, Family::EllipsoidsPen};
+constexpr Family kFamilies[] = {Family::Cylinders,           Family::ConeCylinder,
+                                Family::Ellipsoids,          Family::BoxCylinderPen,
+                                Family::CylindersPen,        Family::EllipsoidsPen,
+                                Family::ParallelCylindersPen};
 
 const std::vector<Pair>& pairs_of(Family family) {
   static const std::vector<Pair> all[] = {make_pairs(Family::Cylinders),
@@ -426,7 +438,8 @@ const std::vector<Pair>& pairs_of(Family family) {
                                           make_pairs(Family::Ellipsoids),
                                           make_penetrating_pairs(Family::BoxCylinderPen),
                                           make_penetrating_pairs(Family::CylindersPen),
-                                          make_penetrating_pairs(Family::EllipsoidsPen)};
+                                          make_penetrating_pairs(Family::EllipsoidsPen),
+                                          make_penetrating_pairs(Family::ParallelCylindersPen)};
   return all[static_cast<int>(family)];
 }
 

@@ -347,12 +347,27 @@ ContactResultT<typename A::Scalar> contact_in_range(
     return true;
   };
   constexpr bool kAxial = detail::kAxialPair<A, B> && !detail::kSegmentCores<A, B>;
+  // Axes tilted by at most kAxialMaxTilt, beyond what counts as parallel: EPA in space first,
+  // within kAxialEpaBudget support calls, where it suits them (detail::epa_suits_tilted_axes()),
+  // and the planes where it stops at that cap.
+  bool epa_first = false;
+  TolerancesT<S> epa_tolerances = tolerances;
   if constexpr (kAxial) {
-    if (axial_answer(S(-1), S(detail::kAxialMaxTilt), std::numeric_limits<S>::infinity()))
+    // Parallel within the tolerance, or a point on an axis: one plane answers.
+    if (axial_answer(S(-1), S(0), std::numeric_limits<S>::infinity())) return result;
+    const S tilt = detail::axes_tilt(diff);
+    epa_first = tilt > S(0) && tilt <= S(detail::kAxialMaxTilt) &&
+                detail::epa_suits_tilted_axes(diff, result.iterations);
+    if (!epa_first &&
+        axial_answer(S(-1), S(detail::kAxialMaxTilt), std::numeric_limits<S>::infinity()))
       return result;
+    if (epa_first)
+      epa_tolerances.max_epa_iterations =
+          std::min(tolerances.max_epa_iterations, detail::kAxialEpaBudget);
   }
   // The cores meet (or may): EPA on the cores, then add the radii.
-  const auto epa = detail::run_epa(diff, gjk.simplex, size, tolerances, detail::epa_fallback(diff));
+  const auto epa =
+      detail::run_epa(diff, gjk.simplex, size, epa_tolerances, detail::epa_fallback(diff));
   result.iterations += epa.iterations;
   if (epa.status == Status::InvalidInput) {
     result.error = detail::kOverflowError;
@@ -445,8 +460,8 @@ ContactResultT<typename A::Scalar> contact_in_range(
       };
       // Newton's answer from EPA's hand-off to the balls (epa.hpp), when as deep as EPA's upper
       // end; else the steps from EPA's final normal.
-      const bool early = epa.newton_ran && epa.newton.value <= epa.upper + rounding(epa.newton);
-      auto least = early ? epa.newton : detail::SupportMinimum<S>::at(diff, n, result.iterations);
+      const bool early = epa.newton && epa.newton->value <= epa.upper + rounding(*epa.newton);
+      auto least = early ? *epa.newton : detail::SupportMinimum<S>::at(diff, n, result.iterations);
       if ((early ||
            detail::newton_on_support(diff, size, tolerances.relative_depth * size,
                                      detail::kNewtonMaxSteps, result.iterations, least) > 0) &&
@@ -494,13 +509,15 @@ ContactResultT<typename A::Scalar> contact_in_range(
   result.status =
       epa.status == Status::IterationLimit ? Status::IterationLimit : Status::Intersecting;
   if constexpr (kAxial) {
-    // EPA stopped at its cap (a spheroid against a cone, capsule or spheroid, axes tilted past
-    // kAxialMaxTilt: a band of nearly equal normals). Its polished depth is a support value of
-    // A - B, so no less than the true depth, and so is each plane's converged depth: the planes
-    // through A's axis answer when they converge no deeper than EPA (within its tolerance). A
-    // scan that missed the least plane comes out deeper and is ignored. Smaller tilts had their
-    // turn above.
-    if (result.status == Status::IterationLimit)
+    // EPA stopped at its cap: a band of nearly equal normals. Nearly parallel axes that EPA had
+    // the first try on: the planes answer. Tilted further (a spheroid against a cone,
+    // capsule or spheroid): EPA's polished depth is a support value of A - B, so no less than the
+    // true depth, and so is each plane's converged depth: the planes through A's axis answer when
+    // they converge no deeper than EPA (within its tolerance). A scan that missed the least plane
+    // comes out deeper and is ignored.
+    if (result.status == Status::IterationLimit && epa_first)
+      axial_answer(S(-1), S(detail::kAxialMaxTilt), std::numeric_limits<S>::infinity());
+    else if (result.status == Status::IterationLimit)
       axial_answer(S(detail::kAxialMaxTilt), S(detail::kAxialFallbackTilt),
                    result.depth + tolerances.relative_depth * size);
   }

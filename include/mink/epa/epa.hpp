@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "mink/epa/inner_ball.hpp"
@@ -177,10 +178,9 @@ struct EpaOutcome {
   /// Closed by Newton's steps and the cores' inner ball (inner_ball.hpp): depth, normal and
   /// points are exact to rounding.
   bool proven_by_ball = false;
-  /// Newton's steps ran for the balls, kept steps, and the balls did not prove them: their answer
-  /// (support value, unit normal, witness pair), for contact()'s refinement.
-  bool newton_ran = false;
-  SupportMinimum<S> newton;
+  /// Where Newton's steps ran for the balls, kept steps, and the balls did not prove them: their
+  /// answer (support value, unit normal, witness pair), for contact()'s refinement.
+  std::optional<SupportMinimum<S>> newton;
 };
 
 /// How far inside its face of P (relative to the size) the origin's projection must lie for
@@ -773,10 +773,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
             least = trial;
             return Step::ProvenByBall;
           }
-          if (newton_kept > 0) {
-            out.newton_ran = true;
-            out.newton = trial;
-          }
+          if (newton_kept > 0) out.newton = trial;
         }
       }
     }

@@ -72,6 +72,13 @@ struct InnerBall {
   static bool touches(const T&, const SupportFeatureT<S>&) { return false; }
 };
 
+/// Whether `core` holds a rolling ball (InnerBall::radius() > 0): one touching at each point of
+/// its boundary, so at its support point along any normal.
+template <class T>
+bool rolls(const T& core) {
+  return InnerBall<T>::radius(core) > typename T::Scalar(0);
+}
+
 /// The rolling ball of radius `r` touching at `support` with outward `normal`: one ball, or none.
 template <class S>
 int rolling_ball(S r, const Vec3T<S>& support, const Vec3T<S>& normal, CoreBall<S>* out) {
@@ -260,10 +267,8 @@ bool inner_ball_proves_depth(const CoreDifference<A, B>& diff, typename A::Scala
                           Vec3T<S>(r.transpose() * (least.vertex.b - diff.translation)),
                           diff.direction_in_b(n), balls_b);
   for (int i = 0; i < count_b; ++i) balls_b[i].centre = r * balls_b[i].centre + diff.translation;
-  const bool rolling_a = InnerBall<A>::radius(diff.a) > S(0);
-  const bool rolling_b = InnerBall<B>::radius(diff.b) > S(0);
-  const Vec3T<S> a = rolling_a ? along.a : least.vertex.a;
-  const Vec3T<S> b = rolling_b ? along.b : least.vertex.b;
+  const Vec3T<S> a = rolls(diff.a) ? along.a : least.vertex.a;
+  const Vec3T<S> b = rolls(diff.b) ? along.b : least.vertex.b;
   balls_a[count_a] = {S(0), a};
   balls_b[count_b] = {S(0), b};
   S proven = -std::numeric_limits<S>::infinity();
@@ -314,10 +319,8 @@ bool newton_proves_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
   const auto touching = [](bool touches, bool rolling, const SupportFeatureT<S>& other) {
     return touches && (rolling || other.count < 3);
   };
-  const bool touch_a = touching(InnerBall<A>::touches(diff.a, feature_a),
-                                InnerBall<A>::radius(diff.a) > S(0), feature_b);
-  const bool touch_b = touching(InnerBall<B>::touches(diff.b, feature_b),
-                                InnerBall<B>::radius(diff.b) > S(0), feature_a);
+  const bool touch_a = touching(InnerBall<A>::touches(diff.a, feature_a), rolls(diff.a), feature_b);
+  const bool touch_b = touching(InnerBall<B>::touches(diff.b, feature_b), rolls(diff.b), feature_a);
   const S reach = (touch_a ? InnerBall<A>::reach(diff.a) : S(0)) +
                   (touch_b ? InnerBall<B>::reach(diff.b) : S(0));
   newton_kept = 0;

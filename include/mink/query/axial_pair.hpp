@@ -150,6 +150,14 @@ inline constexpr int kAxialMaxVertices = 128;
 /// planes through A's axis is then no longer a small change of a constant, and could have minima
 /// narrower than the scan's spacing.
 inline constexpr double kAxialMaxTilt = 1e-2;
+/// EPA in space's cap on axes tilted by at most kAxialMaxTilt (and more than counts as parallel),
+/// before the planes answer (epa_suits_tilted_axes()). Closing, it takes tens of support calls,
+/// up to a few hundred on nearly parallel cylinders side by side, where Newton's steps and the
+/// inner balls spend up to 170 on the kink of a side line (epa/inner_ball.hpp).
+inline constexpr int kAxialEpaBudget = 512;
+/// How far off A - B's axis, as a fraction of the section's radius there, the origin must lie for
+/// EPA in space to have the first try where the sides hold the least support value.
+inline constexpr double kAxialOffAxis = 0.25;
 /// After EPA in space stops at its cap, the planes through A's axis answer up to this tilt: at
 /// any tilt, since the tilt is measured as the sine of the axes' angle. Far from parallel the
 /// least depth over the planes can have minima narrower than the scan's spacing, so contact()
@@ -572,6 +580,49 @@ void polish_capped_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
   touching_points(diff, out.normal, out.depth, size, tol, out.iterations, out.on_a, out.on_b);
 }
 
+/// The sine of the angle between the cores' axes, when both are solids of revolution about a line
+/// (0 when one is symmetric about a point), -1 when either has no axis. Tilted by t, the axes move
+/// B's points by at most t times its bounding radius.
+template <class A, class B>
+typename A::Scalar axes_tilt(const CoreDifference<A, B>& diff) {
+  using S = typename A::Scalar;
+  const CoreAxis<S> axis_a = AxialCore<A>::of(diff.a), axis_b = AxialCore<B>::of(diff.b);
+  if (axis_a.kind == AxisKind::None || axis_b.kind == AxisKind::None) return S(-1);
+  if (axis_a.kind != AxisKind::Line || axis_b.kind != AxisKind::Line) return S(0);
+  return axis_a.axis.cross(diff.rotation * axis_b.axis).norm();
+}
+
+/// Whether EPA in space should have the first try on cores whose axes are tilted by at most
+/// kAxialMaxTilt (the planes only where it stops at kAxialEpaBudget), rather than the planes
+/// through an axis. The planes take 400-1,300 support calls on every such pair (two scans of a
+/// dozen planes and Brent's method, a planar EPA each, 20-60 us); EPA in space, tens, unless a
+/// band of nearly equal normals stops it at its cap: near A - B's axis, about which the sides'
+/// support values vary only by the origin's offset from it (coaxial or coincident shapes). So
+/// the support values of A - B along A's axis both ways (the caps) and across it towards the
+/// origin (the sides): the caps' the least, or the origin at least kAxialOffAxis of the section's
+/// radius off the axis. Three support calls, counted in `iterations`.
+template <class A, class B>
+bool epa_suits_tilted_axes(const CoreDifference<A, B>& diff, int& iterations) {
+  using S = typename A::Scalar;
+  using V = Vec3T<S>;
+  const CoreAxis<S> axis_a = AxialCore<A>::of(diff.a), axis_b = AxialCore<B>::of(diff.b);
+  const V w = axis_a.axis;
+  const V offset = diff.rotation * axis_b.centre + diff.translation - axis_a.centre;
+  const V radial = part_across(offset, w);
+  const S off_axis = radial.norm();
+  if (!(off_axis > S(0))) return false;
+  const auto value = [&](const V& u) {
+    SimplexVertexT<S> v;
+    diff.support(u, v);
+    ++iterations;
+    return u.dot(v.w);
+  };
+  // The origin lies off A - B's axis (through -offset) along radial.
+  const S sides = value(V(radial / off_axis));
+  const S caps = std::min(value(w), value(V(-w)));
+  return caps < sides || off_axis >= S(kAxialOffAxis) * (sides + off_axis);
+}
+
 /// The depth of the cores of diff.a and diff.b (B posed by diff.rotation, diff.translation in A's
 /// frame) when both are solids of revolution about axes tilted by more than `min_tilt` and at
 /// most `max_tilt` (the sine of their angle, which is the angle in radians for the small tilts
@@ -593,9 +644,8 @@ std::optional<AxialDepth<typename A::Scalar>> axial_depth(
   const V centre_b = diff.rotation * axis_b.centre + diff.translation;
   const V axis_b_in_a = diff.rotation * axis_b.axis;
   const V w = axis_a.kind == AxisKind::Line ? axis_a.axis : axis_b_in_a;
-  // The angle between the axes moves B's points by at most tilt times its bounding radius.
   const bool two_lines = axis_a.kind == AxisKind::Line && axis_b.kind == AxisKind::Line;
-  const S tilt = two_lines ? w.cross(axis_b_in_a).norm() : S(0);
+  const S tilt = axes_tilt(diff);
   if (!(tilt > min_tilt)) return std::nullopt;
   S tilt_error = S(0);
   std::optional<AxialDepth<S>> out;

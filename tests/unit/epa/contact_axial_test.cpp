@@ -290,6 +290,31 @@ Real oracle_depth_any(const Solid& a, const Pose& pa, const Solid& b, const Pose
                   oracle_depth_in_frame(a, pa, b, pb, pb.rotation));
 }
 
+/// A pair against the two-angle oracle, both orders, when it penetrates by more than 1e-6 of the
+/// size; returns whether it did. Its relative depth error joins `worst`.
+bool expect_tilted_pair_exact(const Solid& a, const Pose& pa, const Solid& b, const Pose& pb,
+                              double& worst) {
+  const double size = a.size() + b.size();
+  const Real depth = oracle_depth_any(a, pa, b, pb);
+  if (!(depth > 1e-6 * size)) return false;
+  const auto r = contact(a, pa, b, pb);
+  // Two spheroids can have a section so nearly round that the planar EPA stops at its cap:
+  // IterationLimit with a wide bound, the depth still exact (as EPA's polished answers,
+  // docs/conventions.md).
+  const bool round = a.kind == Kind::Spheroid && b.kind == Kind::Spheroid;
+  EXPECT_TRUE(r.status == mink::Status::Intersecting ||
+              (round && r.status == mink::Status::IterationLimit));
+  EXPECT_NEAR(double(r.depth), double(depth), 1e-9 * size);
+  worst = std::max(worst, std::abs(double(r.depth - depth)) / size);
+  expect_answer_in_space(a, pa, b, pb, r, depth, size);
+  // Swapped: the same depth (A's axis is then the other one).
+  const auto s = contact(b, pb, a, pa);
+  EXPECT_TRUE(s.status == mink::Status::Intersecting ||
+              (round && s.status == mink::Status::IterationLimit));
+  EXPECT_NEAR(s.depth, r.depth, 1e-9 * size);
+  return true;
+}
+
 /// Random pairs of solids of revolution, B's axis tilted from A's by 10^lo to 10^hi rad (log-
 /// uniform), coincident, coaxial and side by side, against the two-angle oracle.
 void expect_tilted_pairs_exact(std::uint64_t seed, double lo, double hi, int count) {
@@ -319,27 +344,9 @@ void expect_tilted_pairs_exact(std::uint64_t seed, double lo, double hi, int cou
       const Vec3 local(on_axis ? 0.0 : offset(rng), on_axis ? 0.0 : offset(rng), 0.5 * unit(rng));
       pb.translation += pa.rotation * local;
     }
-    const double size = a.size() + b.size();
-    const Real depth = oracle_depth_any(a, pa, b, pb);
-    if (!(depth > 1e-6 * size)) continue;
-    ++tested;
-    const auto r = contact(a, pa, b, pb);
     SCOPED_TRACE(testing::Message() << "tilt " << tilt << " placement " << placement << " kinds "
                                     << int(a.kind) << " " << int(b.kind));
-    // Two spheroids can have a section so nearly round that the planar EPA stops at its cap:
-    // IterationLimit with a wide bound, the depth still exact (as EPA's polished answers,
-    // docs/conventions.md).
-    const bool round = a.kind == Kind::Spheroid && b.kind == Kind::Spheroid;
-    EXPECT_TRUE(r.status == mink::Status::Intersecting ||
-                (round && r.status == mink::Status::IterationLimit));
-    EXPECT_NEAR(double(r.depth), double(depth), 1e-9 * size);
-    worst = std::max(worst, std::abs(double(r.depth - depth)) / size);
-    expect_answer_in_space(a, pa, b, pb, r, depth, size);
-    // Swapped: the same depth (A's axis is then the other one).
-    const auto s = contact(b, pb, a, pa);
-    EXPECT_TRUE(s.status == mink::Status::Intersecting ||
-                (round && s.status == mink::Status::IterationLimit));
-    EXPECT_NEAR(s.depth, r.depth, 1e-9 * size);
+    tested += expect_tilted_pair_exact(a, pa, b, pb, worst);
   }
   EXPECT_GE(tested, count / 2);
   testing::Test::RecordProperty("worst_relative_depth_error", std::to_string(worst));
@@ -350,6 +357,49 @@ TEST(ContactAxial, NearlyParallelAxesMatchTheTwoAngleMinimum) {
   // near enough that a circle of normals is almost as good (EPA in space ran into its cap here
   // and answered up to 1e-6 of the size off).
   expect_tilted_pairs_exact(20261130, -11, -2.5, oracle::sweep_count(60, 8));
+}
+
+TEST(ContactAxial, NearlyParallelSideBySideAndEndToEndMatchTheTwoAngleMinimum) {
+  // Axes tilted by 1e-9 to 1e-2 rad with the origin well off A - B's axis, where EPA in space
+  // answers first (kAxialEpaBudget): side by side, B's axis 0.3 to 0.98 of the radii's sum from
+  // A's (sides pressed together, some along the kink where a side line meets a cap), and end to
+  // end, B's axis within A's radius and the ends pressed 0.1 to 10 % of the lengths together.
+  // Cylinders, cones and capsules, 1e3 from the origin in a third of the pairs.
+  std::mt19937_64 rng(20261206);
+  std::uniform_real_distribution<double> unit(-1, 1), fraction(0, 1), exponent(-9, -2);
+  std::uniform_real_distribution<double> length(0.2, 2.0);
+  const Kind kinds[] = {Kind::Cylinder, Kind::Cone, Kind::Capsule};
+  const int count = oracle::sweep_count(60, 8);
+  int tested = 0;
+  double worst = 0;
+  for (int k = 0; k < count; ++k) {
+    SCOPED_TRACE(k);
+    const Solid a{kinds[std::uniform_int_distribution<int>(0, 2)(rng)], length(rng), length(rng)};
+    const Solid b{kinds[std::uniform_int_distribution<int>(0, 2)(rng)], length(rng), length(rng)};
+    const Quat q = Quat(unit(rng), unit(rng), unit(rng), unit(rng)).normalized();
+    const double far = fraction(rng) < 0.33 ? 1e3 : 0.0;
+    const Pose pa = Pose::from(Vec3(far, -0.5 * far, 0.25 * far), q);
+    const double tilt = std::pow(10.0, exponent(rng));
+    const Vec3 turn_axis = Vec3(unit(rng), unit(rng), 0).normalized();
+    Pose pb = pa;
+    pb.rotation = pa.rotation * Eigen::AngleAxisd(tilt, turn_axis).toRotationMatrix();
+    const double turn = 2 * M_PI * fraction(rng);
+    const Vec3 across(std::cos(turn), std::sin(turn), 0);
+    const bool side_by_side = k % 2 == 0;
+    const Vec3 local =
+        side_by_side
+            ? Vec3((0.3 + 0.68 * fraction(rng)) * (a.radius + b.radius) * across +
+                   0.5 * unit(rng) * Vec3::UnitZ())
+            : Vec3(0.8 * std::min(a.radius, b.radius) * fraction(rng) * across +
+                   (1 - 0.1 * std::pow(10.0, -fraction(rng))) * (a.half_height + b.half_height) *
+                       (unit(rng) < 0 ? -1.0 : 1.0) * Vec3::UnitZ());
+    pb.translation += pa.rotation * local;
+    SCOPED_TRACE(testing::Message() << "tilt " << tilt << (side_by_side ? " side" : " end")
+                                    << " kinds " << int(a.kind) << " " << int(b.kind));
+    tested += expect_tilted_pair_exact(a, pa, b, pb, worst);
+  }
+  EXPECT_GE(tested, count / 3);
+  testing::Test::RecordProperty("worst_relative_depth_error", std::to_string(worst));
 }
 
 TEST(ContactAxial, TiltedAxesMatchTheTwoAngleMinimum) {
