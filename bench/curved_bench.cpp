@@ -291,9 +291,12 @@ std::vector<Pair> make_penetrating_pairs(Family family) {
         ra = axis_across(n);
         local_a = side_point(p.a, ra.transpose() * n, 0.8 * p.a.extents.z() * unit(rng), ball_a);
         if (family == Family::ParallelCylindersPen) {
-          // Side by side: B's axis A's turned about n by 1e-6 to 1e-2 rad, so the side lines
-          // cross (seen along n) at the deepest points, at a small angle.
-          std::uniform_real_distribution<double> tilt_exponent(-6, -2);
+          // Side by side: B's axis A's turned about n by 1e-3 to 1e-2 rad, so the side lines
+          // cross (seen along n) at the deepest points, at a small angle. Not less: B's axis is
+          // rounded to 1e-16, which turns the true normal by 1e-16 / tilt and moves the crossing
+          // along the lines by that over the tilt again, so the construction's points would be
+          // off the rounded pair's by more than 1e-9 of the size.
+          std::uniform_real_distribution<double> tilt_exponent(-3, -2);
           const double tilt = std::pow(10.0, tilt_exponent(rng)) * (unit(rng) < 0 ? -1 : 1);
           rb = frame_about(Eigen::AngleAxisd(tilt, n) * ra.col(2));
           local_b = side_point(p.b, rb.transpose() * -n, 0.8 * p.b.extents.z() * unit(rng), ball_b);
