@@ -459,13 +459,14 @@ ContactResultT<typename A::Scalar> contact_in_range(
                                    diff.translation.cwiseAbs().maxCoeff());
       };
       // Newton's answer from EPA's hand-off to the balls (epa.hpp), when as deep as EPA's upper
-      // end; else the steps from EPA's final normal.
+      // end, with the edges' ends the hand-off left (newton_at_end()); else the steps from EPA's
+      // final normal.
       const bool early = epa.newton && epa.newton->value <= epa.upper + rounding(*epa.newton);
       auto least = early ? *epa.newton : detail::SupportMinimum<S>::at(diff, n, result.iterations);
-      if ((early ||
-           detail::newton_on_support(diff, size, tolerances.relative_depth * size,
-                                     detail::kNewtonMaxSteps, result.iterations, least) > 0) &&
-          least.value <= epa.upper + rounding(least)) {
+      const int kept =
+          detail::newton_on_support(diff, size, tolerances.relative_depth * size,
+                                    early ? 0 : detail::kNewtonMaxSteps, result.iterations, least);
+      if ((early || kept > 0) && least.value <= epa.upper + rounding(least)) {
         n = least.normal;
         core_depth = std::max(S(0), least.value);
         on_a = least.vertex.a;

@@ -332,8 +332,8 @@ bool newton_proves_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
     least = at_face;
     return true;
   }
-  newton_kept =
-      newton_on_support(diff, size, tol.relative_depth * size, kNewtonMaxSteps, iterations, least);
+  newton_kept = newton_on_support(diff, size, tol.relative_depth * size, kNewtonMaxSteps,
+                                  iterations, least, false);
   return inner_ball_proves_depth(diff, bracket, witness_gap, iterations, least, lower);
 }
 

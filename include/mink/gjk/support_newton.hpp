@@ -1210,13 +1210,14 @@ bool rim_against_edge(const CoreDifference<A, B>& diff,
 /// improves, and only to a vertex that is a witness pair: its points' offset vertex.w - value
 /// normal across the normal within `witness_gap` (unit: length). A flat face's support point is
 /// one corner of it, not the point of contact: an answer that keeps one is dropped; last, an
-/// edge's end beside the minimum is tried as a point (newton_at_end()), else `best` is left as it
-/// came (with its points from its normal, as above). Returns the number of steps kept, the
-/// points' placing counting one (0 when nothing changed).
+/// edge's end beside the minimum is tried as a point (newton_at_end(), up to 16 reduced
+/// problems: not when `at_ends` is false), else `best` is left as it came (with its points from
+/// its normal, as above). Returns the number of steps kept, the points' placing counting one (0
+/// when nothing changed).
 template <ConvexShape A, ConvexShape B>
 int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
                       typename A::Scalar witness_gap, int max_steps, int& iterations,
-                      SupportMinimum<typename A::Scalar>& best) {
+                      SupportMinimum<typename A::Scalar>& best, bool at_ends = true) {
   using S = typename A::Scalar;
   const SupportMinimum<S> start = best;
   int kept = newton_steps(diff, size, max_steps, iterations, best);
@@ -1309,7 +1310,7 @@ int newton_on_support(const CoreDifference<A, B>& diff, typename A::Scalar size,
   if (is_witness_pair(best, witness_gap)) return kept;
   // Last, from Newton's normal beside an edge, its ends as points (newton_at_end()).
   SupportMinimum<S> at_end = stepped;
-  if (beside_edge &&
+  if (at_ends && beside_edge &&
       newton_at_end(diff, feature_a, feature_b, size, witness_gap, iterations, at_end)) {
     best = at_end;
     return kept + 1;
