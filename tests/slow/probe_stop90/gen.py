@@ -1,26 +1,19 @@
 # Nearly parallel solids of revolution (cylinder, cone, capsule) penetrating: side by side, end to
 # end, near-coaxial; tilts 1e-9..1e-2; 60 % of pairs 1e3..1e5 from the origin. Both orders.
-import numpy as np, json, sys
+import os, sys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from common import R, hloc, bound, np, json
 rng=np.random.default_rng(int(sys.argv[1])); N=int(sys.argv[2])
 def qmul(a,b):
     w1,x1,y1,z1=a; w2,x2,y2,z2=b
     return np.array([w1*w2-x1*x2-y1*y2-z1*z2,w1*x2+x1*w2+y1*z2-z1*y2,w1*y2-x1*z2+y1*w2+z1*x2,w1*z2+x1*y2-y1*x2+z1*w2])
 def qax(ax,ang):
     ax=np.asarray(ax,float); ax/=np.linalg.norm(ax); return np.r_[np.cos(ang/2),np.sin(ang/2)*ax]
-def R(q):
-    w,x,y,z=q
-    return np.array([[1-2*(y*y+z*z),2*(x*y-w*z),2*(x*z+w*y)],[2*(x*y+w*z),1-2*(x*x+z*z),2*(y*z-w*x)],[2*(x*z-w*y),2*(y*z+w*x),1-2*(x*x+y*y)]])
 def lu(a,b): return float(np.exp(rng.uniform(np.log(a),np.log(b))))
 def shape():
     t=rng.choice(['cylinder','cylinder','cone','capsule'])
     r=lu(0.1,2); h=r*lu(0.05,10)
     return {'type':str(t),'radius':r,'half_height':h}
-def hloc(s,n):
-    t=s['type']; r=s['radius']; h=s['half_height']; a=np.hypot(n[...,0],n[...,1]); z=n[...,2]
-    if t=='cylinder': return r*a+h*np.abs(z)
-    if t=='cone': return np.maximum(h*z, r*a-h*z)
-    if t=='capsule': return h*np.abs(z)+r
-def bound(s): return s['half_height']+s['radius'] if s['type']=='capsule' else float(np.hypot(s['radius'],s['half_height']))
 M=4000; i=np.arange(M)+0.5; phi=np.arccos(1-2*i/M); th=np.pi*(1+5**0.5)*i
 G=np.stack([np.cos(th)*np.sin(phi),np.sin(th)*np.sin(phi),np.cos(phi)],1)
 out=[]
