@@ -31,7 +31,9 @@
 /// two planes known in advance, which those planes, a scan and Brent's method find; EPA in space
 /// refined the nearly round polytope around the circle of nearly equal normals and ran into its cap
 /// (coincident cones tilted by 1e-6 rad: 9e-7 off, 65 us, IterationLimit; now exact to 1e-12, about
-/// 400 support calls).
+/// 400 support calls). Away from A - B's axis (side by side, end to end) there is no such band,
+/// and EPA in space goes first (epa_suits_tilted_axes()), the planes only where it stops at
+/// kAxialEpaBudget.
 ///
 /// Tilted further, EPA in space answers first, in a third of the time, but a spheroid against a
 /// cone, capsule or spheroid (a nearly round section: a band of nearly equal normals) can still
@@ -151,9 +153,8 @@ inline constexpr int kAxialMaxVertices = 128;
 /// narrower than the scan's spacing.
 inline constexpr double kAxialMaxTilt = 1e-2;
 /// EPA in space's cap on axes tilted by at most kAxialMaxTilt (and more than counts as parallel),
-/// before the planes answer (epa_suits_tilted_axes()). Closing, it takes tens of support calls,
-/// up to a few hundred on nearly parallel cylinders side by side, where Newton's steps and the
-/// inner balls spend up to 170 on the kink of a side line (epa/inner_ball.hpp).
+/// before the planes answer (epa_suits_tilted_axes()). Where it closes it takes tens of support
+/// calls, up to about 400 on two cylinders side by side (stop 90's probe).
 inline constexpr int kAxialEpaBudget = 512;
 /// How far off A - B's axis, as a fraction of the section's radius there, the origin must lie for
 /// EPA in space to have the first try where the sides hold the least support value.
