@@ -307,8 +307,9 @@ ContactResultT<typename A::Scalar> contact_in_range(
   // so large that the answer overflows are left to EPA, whose rules report it.
   // Generic, so that pairs without axes never instantiate it.
   // `ceiling`: when finite, the answer is taken only if it converged and is no deeper than that.
-  [[maybe_unused]] auto axial_answer = [&](auto min_tilt, auto max_tilt, S ceiling) {
-    const auto axial = detail::axial_depth(diff, size, tolerances, max_tilt, min_tilt);
+  [[maybe_unused]] auto axial_answer = [&](const auto& axes, auto min_tilt, auto max_tilt,
+                                           S ceiling) {
+    const auto axial = detail::axial_depth(diff, axes, size, tolerances, max_tilt, min_tilt);
     const bool checked = std::isfinite(ceiling);
     if (!axial || (checked && axial->status != Status::Intersecting)) return false;
     // Flat features nearly parallel (a cone's base on a cylinder's cap tilted 4e-7 rad): the
@@ -347,19 +348,19 @@ ContactResultT<typename A::Scalar> contact_in_range(
     return true;
   };
   constexpr bool kAxial = detail::kAxialPair<A, B> && !detail::kSegmentCores<A, B>;
-  // Axes tilted by at most kAxialMaxTilt, beyond what counts as parallel: EPA in space first,
-  // within kAxialEpaBudget support calls, where it suits them (detail::epa_suits_tilted_axes()),
-  // and the planes where it stops at that cap.
+  // Parallel within the tolerance, or a point on an axis: one plane answers. Axes tilted further,
+  // by at most kAxialMaxTilt: EPA in space first, within kAxialEpaBudget support calls, where it
+  // suits them (detail::epa_suits_tilted_axes()), and the planes where it stops at that cap;
+  // elsewhere the planes first.
   bool epa_first = false;
   TolerancesT<S> epa_tolerances = tolerances;
   if constexpr (kAxial) {
-    // Parallel within the tolerance, or a point on an axis: one plane answers.
-    if (axial_answer(S(-1), S(0), std::numeric_limits<S>::infinity())) return result;
-    const S tilt = detail::axes_tilt(diff);
-    epa_first = tilt > S(0) && tilt <= S(detail::kAxialMaxTilt) &&
-                detail::epa_suits_tilted_axes(diff, result.iterations);
+    const auto axes = detail::pair_axes(diff);
+    epa_first = axes.tilt <= S(detail::kAxialMaxTilt) &&
+                !detail::axes_count_as_parallel(diff, axes, size, tolerances) &&
+                detail::epa_suits_tilted_axes(diff, axes, result.iterations);
     if (!epa_first &&
-        axial_answer(S(-1), S(detail::kAxialMaxTilt), std::numeric_limits<S>::infinity()))
+        axial_answer(axes, S(-1), S(detail::kAxialMaxTilt), std::numeric_limits<S>::infinity()))
       return result;
     if (epa_first)
       epa_tolerances.max_epa_iterations =
@@ -516,10 +517,11 @@ ContactResultT<typename A::Scalar> contact_in_range(
     // true depth, and so is each plane's converged depth: the planes through A's axis answer when
     // they converge no deeper than EPA (within its tolerance). A scan that missed the least plane
     // comes out deeper and is ignored.
+    const auto axes = detail::pair_axes(diff);
     if (result.status == Status::IterationLimit && epa_first)
-      axial_answer(S(-1), S(detail::kAxialMaxTilt), std::numeric_limits<S>::infinity());
+      axial_answer(axes, S(-1), S(detail::kAxialMaxTilt), std::numeric_limits<S>::infinity());
     else if (result.status == Status::IterationLimit)
-      axial_answer(S(detail::kAxialMaxTilt), S(detail::kAxialFallbackTilt),
+      axial_answer(axes, S(detail::kAxialMaxTilt), S(detail::kAxialFallbackTilt),
                    result.depth + tolerances.relative_depth * size);
   }
   answer_by_point_sets();

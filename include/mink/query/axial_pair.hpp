@@ -581,16 +581,55 @@ void polish_capped_depth(const CoreDifference<A, B>& diff, typename A::Scalar si
   touching_points(diff, out.normal, out.depth, size, tol, out.iterations, out.on_a, out.on_b);
 }
 
-/// The sine of the angle between the cores' axes, when both are solids of revolution about a line
-/// (0 when one is symmetric about a point), -1 when either has no axis. Tilted by t, the axes move
-/// B's points by at most t times its bounding radius.
+/// The cores' axes for one pair, in A's frame: what axial_depth() and epa_suits_tilted_axes()
+/// both start from.
+template <class S>
+struct PairAxes {
+  CoreAxis<S> a, b;             ///< as the cores give them (each in its own frame)
+  Vec3T<S> centre_a, centre_b;  ///< a point of each axis, in A's frame
+  Vec3T<S> axis_b;              ///< B's axis turned into A's frame
+  Vec3T<S> w;                   ///< the axis the planes pass through: A's if it is a line, else B's
+  bool two_lines = false;       ///< both solids of revolution about a line
+  /// The sine of the angle between the axes when both are lines, 0 when one is symmetric about a
+  /// point, -1 when either has no axis. Tilted by t, the axes move B's points by at most t times
+  /// its bounding radius.
+  S tilt = S(-1);
+};
+
 template <class A, class B>
-typename A::Scalar axes_tilt(const CoreDifference<A, B>& diff) {
+PairAxes<typename A::Scalar> pair_axes(const CoreDifference<A, B>& diff) {
   using S = typename A::Scalar;
-  const CoreAxis<S> axis_a = AxialCore<A>::of(diff.a), axis_b = AxialCore<B>::of(diff.b);
-  if (axis_a.kind == AxisKind::None || axis_b.kind == AxisKind::None) return S(-1);
-  if (axis_a.kind != AxisKind::Line || axis_b.kind != AxisKind::Line) return S(0);
-  return axis_a.axis.cross(diff.rotation * axis_b.axis).norm();
+  PairAxes<S> out;
+  out.a = AxialCore<A>::of(diff.a);
+  out.b = AxialCore<B>::of(diff.b);
+  out.centre_a = out.a.centre;
+  out.centre_b = diff.rotation * out.b.centre + diff.translation;
+  out.axis_b = diff.rotation * out.b.axis;
+  out.w = out.a.kind == AxisKind::Line ? out.a.axis : out.axis_b;
+  out.two_lines = out.a.kind == AxisKind::Line && out.b.kind == AxisKind::Line;
+  if (out.a.kind == AxisKind::None || out.b.kind == AxisKind::None)
+    out.tilt = S(-1);
+  else
+    out.tilt = out.two_lines ? out.a.axis.cross(out.axis_b).norm() : S(0);
+  return out;
+}
+
+/// How far the tilt moves B's points at most (0 unless both axes are lines).
+template <class A, class B>
+typename A::Scalar tilt_error(const CoreDifference<A, B>& diff,
+                              const PairAxes<typename A::Scalar>& axes) {
+  using S = typename A::Scalar;
+  if (!axes.two_lines) return S(0);
+  return axes.tilt * std::max(diff.a.bounding_radius(), diff.b.bounding_radius());
+}
+
+/// Whether the planes through one common axis answer as if the axes were parallel: one is
+/// symmetric about a point, or the tilt moves B's points by under 1 % of the depth tolerance.
+template <class A, class B>
+bool axes_count_as_parallel(const CoreDifference<A, B>& diff,
+                            const PairAxes<typename A::Scalar>& axes, typename A::Scalar size,
+                            const TolerancesT<typename A::Scalar>& tol) {
+  return tilt_error(diff, axes) <= typename A::Scalar(0.01) * tol.relative_depth * size;
 }
 
 /// Whether EPA in space should have the first try on cores whose axes are tilted by at most
@@ -603,13 +642,12 @@ typename A::Scalar axes_tilt(const CoreDifference<A, B>& diff) {
 /// origin (the sides): the caps' the least, or the origin at least kAxialOffAxis of the section's
 /// radius off the axis. Three support calls, counted in `iterations`.
 template <class A, class B>
-bool epa_suits_tilted_axes(const CoreDifference<A, B>& diff, int& iterations) {
+bool epa_suits_tilted_axes(const CoreDifference<A, B>& diff,
+                           const PairAxes<typename A::Scalar>& axes, int& iterations) {
   using S = typename A::Scalar;
   using V = Vec3T<S>;
-  const CoreAxis<S> axis_a = AxialCore<A>::of(diff.a), axis_b = AxialCore<B>::of(diff.b);
-  const V w = axis_a.axis;
-  const V offset = diff.rotation * axis_b.centre + diff.translation - axis_a.centre;
-  const V radial = part_across(offset, w);
+  const V w = axes.w;
+  const V radial = part_across(V(axes.centre_b - axes.centre_a), w);
   const S off_axis = radial.norm();
   if (!(off_axis > S(0))) return false;
   const auto value = [&](const V& u) {
@@ -618,63 +656,52 @@ bool epa_suits_tilted_axes(const CoreDifference<A, B>& diff, int& iterations) {
     ++iterations;
     return u.dot(v.w);
   };
-  // The origin lies off A - B's axis (through -offset) along radial.
+  // The origin lies off A - B's axis (through centre_a - centre_b) along radial.
   const S sides = value(V(radial / off_axis));
   const S caps = std::min(value(w), value(V(-w)));
   return caps < sides || off_axis >= S(kAxialOffAxis) * (sides + off_axis);
 }
 
 /// The depth of the cores of diff.a and diff.b (B posed by diff.rotation, diff.translation in A's
-/// frame) when both are solids of revolution about axes tilted by more than `min_tilt` and at
-/// most `max_tilt` (the sine of their angle, which is the angle in radians for the small tilts
-/// this path is for; the default range takes parallel axes too; see the file comment);
-/// nothing when they are not, or when a planar problem has no area or shows the cores apart (the
-/// caller's EPA answers then). `size`: the sum of the bounding radii.
+/// frame, their axes `axes` = pair_axes(diff)) when both are solids of revolution about axes
+/// tilted by more than `min_tilt` and at most `max_tilt` (the sine of their angle, which is the
+/// angle in radians for the small tilts this path is for; the default range takes parallel axes
+/// too; see the file comment); nothing when they are not, or when a planar problem has no area
+/// or shows the cores apart (the caller's EPA answers then). `size`: the sum of the bounding
+/// radii.
 template <class A, class B>
 std::optional<AxialDepth<typename A::Scalar>> axial_depth(
-    const CoreDifference<A, B>& diff, typename A::Scalar size,
-    const TolerancesT<typename A::Scalar>& tol,
+    const CoreDifference<A, B>& diff, const PairAxes<typename A::Scalar>& axes,
+    typename A::Scalar size, const TolerancesT<typename A::Scalar>& tol,
     typename A::Scalar max_tilt = typename A::Scalar(kAxialMaxTilt),
     typename A::Scalar min_tilt = typename A::Scalar(-1)) {
   using S = typename A::Scalar;
-  using V = Vec3T<S>;
-  const CoreAxis<S> axis_a = AxialCore<A>::of(diff.a), axis_b = AxialCore<B>::of(diff.b);
-  if (axis_a.kind == AxisKind::None || axis_b.kind == AxisKind::None) return std::nullopt;
-  if (axis_a.kind == AxisKind::Any && axis_b.kind == AxisKind::Any) return std::nullopt;
-  const V centre_a = axis_a.centre;
-  const V centre_b = diff.rotation * axis_b.centre + diff.translation;
-  const V axis_b_in_a = diff.rotation * axis_b.axis;
-  const V w = axis_a.kind == AxisKind::Line ? axis_a.axis : axis_b_in_a;
-  const bool two_lines = axis_a.kind == AxisKind::Line && axis_b.kind == AxisKind::Line;
-  const S tilt = axes_tilt(diff);
-  if (!(tilt > min_tilt)) return std::nullopt;
-  S tilt_error = S(0);
+  if (axes.a.kind == AxisKind::None || axes.b.kind == AxisKind::None) return std::nullopt;
+  if (axes.a.kind == AxisKind::Any && axes.b.kind == AxisKind::Any) return std::nullopt;
+  if (!(axes.tilt > min_tilt)) return std::nullopt;
   std::optional<AxialDepth<S>> out;
-  if (two_lines) {
-    tilt_error = tilt * std::max(diff.a.bounding_radius(), diff.b.bounding_radius());
-    if (!(tilt_error <= S(0.01) * tol.relative_depth * size)) {
-      if (!(tilt <= max_tilt)) return std::nullopt;
-      out = tilted_axial_depth(diff, w, axis_b_in_a, centre_a, centre_b, size, tol);
-      if (!out) return out;
-      // And the planes through B's axis, the lesser depth: each axis's flat end has its kink at
-      // a direction that only the planes through that axis hold for every angle, and the least
-      // over the other axis's planes can dip there in a notch narrower than the scan (two thin
-      // discs face to face, axes 9e-3 rad apart, 1e-7 deep: 2.6e-8 too deep about one axis,
-      // exact about the other).
-      // A scan about B's axis that gives up leaves A's answer as it was.
-      auto about_b = tilted_axial_depth(diff, axis_b_in_a, w, centre_b, centre_a, size, tol);
-      if (about_b && about_b->depth < out->depth) {
-        about_b->iterations += out->iterations;
-        out = about_b;
-      } else if (about_b) {
-        out->iterations += about_b->iterations;
-      }
-    }
-  }
-  if (!out) {
-    out = parallel_axial_depth(diff, w, centre_a, centre_b, size, tol);
+  if (!axes_count_as_parallel(diff, axes, size, tol)) {
+    if (!(axes.tilt <= max_tilt)) return std::nullopt;
+    out = tilted_axial_depth(diff, axes.w, axes.axis_b, axes.centre_a, axes.centre_b, size, tol);
     if (!out) return out;
-    out->error_bound += tilt_error;
+    // And the planes through B's axis, the lesser depth: each axis's flat end has its kink at a
+    // direction that only the planes through that axis hold for every angle, and the least over
+    // the other axis's planes can dip there in a notch narrower than the scan (two thin discs
+    // face to face, axes 9e-3 rad apart, 1e-7 deep: 2.6e-8 too deep about one axis, exact about
+    // the other).
+    // A scan about B's axis that gives up leaves A's answer as it was.
+    auto about_b =
+        tilted_axial_depth(diff, axes.axis_b, axes.w, axes.centre_b, axes.centre_a, size, tol);
+    if (about_b && about_b->depth < out->depth) {
+      about_b->iterations += out->iterations;
+      out = about_b;
+    } else if (about_b) {
+      out->iterations += about_b->iterations;
+    }
+  } else {
+    out = parallel_axial_depth(diff, axes.w, axes.centre_a, axes.centre_b, size, tol);
+    if (!out) return out;
+    out->error_bound += tilt_error(diff, axes);
   }
   if (out->status == Status::IterationLimit) polish_capped_depth(diff, size, tol, *out);
   return out;
