@@ -12,16 +12,7 @@ endfunction()
 
 run(${CMAKE_COMMAND} --install ${MINK_BUILD_DIR} --prefix ${prefix})
 # The compiler that built mink (a user links a library with the compiler that built it).
-set(flags "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}")
-if(SANITIZE)
-  # The sanitizers' runtime must match the library's. -O0 without debug information: the build
-  # type's -O2 -g took 100 s for this one file, and at -O1 the test took 53 s once the
-  # consumer called contact() and manifold() on static types; it runs in milliseconds.
-  list(APPEND flags "-DCMAKE_BUILD_TYPE=" "-DCMAKE_CXX_FLAGS=-O0 -fsanitize=address,undefined"
-       "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
-else()
-  list(APPEND flags "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
-endif()
+set(flags "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
 run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build -G ${GENERATOR}
     -DCMAKE_PREFIX_PATH=${prefix} ${flags})
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
@@ -30,7 +21,7 @@ run(${WORK_DIR}/build/consumer)
 # A user's program built by GCC, Debian's compiler, when mink itself was built by another (Clang in
 # scripts/test): the public headers' templates (GJK, EPA, contact, manifold) then compile under
 # GCC too, at the build type's optimization and with its warnings.
-if(NOT SANITIZE AND GXX AND NOT CXX_COMPILER_ID STREQUAL "GNU")
+if(GXX AND NOT CXX_COMPILER_ID STREQUAL "GNU")
   set(gcc_flags "-Wall -Wextra -Wpedantic -Wshadow")
   if(WERROR)
     string(APPEND gcc_flags " -Werror")
