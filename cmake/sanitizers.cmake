@@ -5,9 +5,9 @@ if(MINK_SANITIZE)
   # at -O2 and still inlines enough to run the sweeps quickly. Line tables only (overriding the
   # build type's -g): reports keep file and line, and the tests compile about 16 % faster.
   # AddressSanitizer's checks as calls into its runtime rather than inline code: the same checks
-  # in much less code, so the template-heavy files compile faster (the static property sweeps at
-  # -O0: 224 s against 154 s), and run slower: the long sweeps keep inline checks
-  # (tests/CMakeLists.txt).
+  # in much less code, so the template-heavy files compile faster (a batch of property sweeps at
+  # -O0: 224 s against 154 s; the library's shape_queries.cpp 160 s against 136 s), and run
+  # slower: the long sweeps keep inline checks (tests/CMakeLists.txt).
   add_compile_options(-O1 -gline-tables-only -fsanitize=address,undefined -fno-sanitize-recover=all
                       -fsanitize-address-outline-instrumentation -fno-omit-frame-pointer)
   # Executables not position independent: the test program's 2.6 million relocations took half
