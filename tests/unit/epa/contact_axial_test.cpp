@@ -402,6 +402,42 @@ TEST(ContactAxial, NearlyParallelSideBySideAndEndToEndMatchTheTwoAngleMinimum) {
   testing::Test::RecordProperty("worst_relative_depth_error", std::to_string(worst));
 }
 
+TEST(ContactAxial, NearlyCoaxialConesSlantsGoToThePlanes) {
+  // Stop 90's probe, nearly coaxial, the origin 1e-5 and 1e-6 off A - B's axis: a wide cone A
+  // and a thin one (or a short capsule) B inside it, whose least depth lies along A's slanted
+  // side, 3.6e-3 and 1.6e-3 of the size below the caps' values. The sides were sampled only
+  // straight across the axis, which the caps beat, so EPA in space went first and ran into its
+  // cap before the planes answered (1,000 support calls, 117 us); the planes alone take about
+  // 550. Both orders.
+  struct Case {
+    Solid a, b;
+    Vec3 ta;
+    Quat qa;
+    Vec3 tb;
+    Quat qb;
+  };
+  const Case cases[] = {
+      {{Kind::Cone, 1.8535660235870903, 0.6628705889635167},
+       {Kind::Cone, 0.1744411885791893, 0.01244590349213228},
+       Vec3(-584.618, -497.368, 38.266),
+       Quat(0.8037058566401182, 0.35445586012587554, -0.28879585059579194, -0.380808214070354),
+       Vec3(-584.7068124541398, -497.4103087847783, 38.33638133804847),
+       Quat(0.803705848924429, 0.3544558671630677, -0.2887958638677655, -0.38080821373916207)},
+      {{Kind::Cone, 1.3160807770069032, 0.9558596462472584},
+       {Kind::Capsule, 0.2927234621087285, 0.0243622356320603},
+       Vec3(0.102, -1.216, 1.531),
+       Quat(0.2908144356511835, 0.011081302842341267, 0.864904311415029, 0.40895562209107034),
+       Vec3(0.22278323099032232, -1.0509014050457857, 1.4138905377459368),
+       Quat(0.29081467841905384, 0.011081449822089574, 0.8649042738490319, 0.40895552492115966)}};
+  double worst = 0;
+  for (const Case& c : cases) {
+    const Pose pa = Pose::from(c.ta, c.qa.normalized()), pb = Pose::from(c.tb, c.qb.normalized());
+    EXPECT_TRUE(expect_tilted_pair_exact(c.a, pa, c.b, pb, worst));
+    EXPECT_LE(contact(c.a, pa, c.b, pb).iterations, 700);
+    EXPECT_LE(contact(c.b, pb, c.a, pa).iterations, 700);
+  }
+}
+
 TEST(ContactAxial, TiltedAxesMatchTheTwoAngleMinimum) {
   // 3e-3 to 0.5 rad: on both sides of kAxialMaxTilt, where EPA in space takes over, and the planes
   // answer after EPA stops at its cap.
