@@ -168,8 +168,8 @@ inline constexpr int kAxialEpaBudget = 512;
 /// How far off A - B's axis, as a fraction of the section's radius there, the origin must lie for
 /// EPA in space to have the first try where the sides hold the least support value. At a
 /// hundredth it closed in about 120 support calls (20 us, as long as the planes take); 1e-3 off,
-/// it took 350 (85 us), and closer in it stopped at its cap. Stop 92's probe: 0.02 and 0.005 gave
-/// the least time in all, 0.002 ran into the cap.
+/// it took 350 (85 us), and closer in it stopped at its cap. On stop 90's probe 0.02 and 0.005
+/// gave the least time in all, and 0.002 ran into the cap (stop 92).
 inline constexpr double kAxialOffAxis = 0.02;
 /// After EPA in space stops at its cap, the planes through A's axis answer up to this tilt: at
 /// any tilt, since the tilt is measured as the sine of the axes' angle. Far from parallel the
@@ -654,8 +654,9 @@ bool axes_count_as_parallel(const CoreDifference<A, B>& diff,
 /// support value, among directions in the half-plane through the axis and the origin, along the
 /// axis (a cap, flat: no band). Those directions are sampled across the axis, along it both
 /// ways, leaning from across towards it by every 15 degrees, and along the sides of cones,
-/// whose least value lies where such a side leans (a wide cone against a thin disc, the cap
-/// 3.6e-3 of the size above it: taken for the cap's, EPA in space ran to its cap, 117 us).
+/// whose least value lies where such a side leans (a wide cone about a thin one: the least value
+/// 9e-4 of the size below the cap's, 6 degrees from the nearest sample, which the cap beat; EPA
+/// in space went first and ran to its cap, 117 us).
 /// 1 to 17 support calls, counted in `iterations`.
 template <class A, class B>
 bool epa_suits_tilted_axes(const CoreDifference<A, B>& diff,
