@@ -687,8 +687,9 @@ bool epa_suits_tilted_axes(const CoreDifference<A, B>& diff,
   for (const S sine : {S(0.25881904510252074), S(0.5), S(0.70710678118654752),
                        S(0.86602540378443865), S(0.96592582628906829)})  // 15, 30, ..., 75 degrees
     lean(sine);
-  if (axes.a.slant > S(0)) lean(axes.a.slant);
-  if (axes.b.slant > S(0)) lean(axes.b.slant);
+  // A cone of no height is a disc: its side is a cap, which must not count among the sides.
+  for (const S slant : {axes.a.slant, axes.b.slant})
+    if (slant > S(0) && slant < S(1)) lean(slant);
   return caps < sides;
 }
 

@@ -402,7 +402,7 @@ TEST(ContactAxial, NearlyParallelSideBySideAndEndToEndMatchTheTwoAngleMinimum) {
   testing::Test::RecordProperty("worst_relative_depth_error", std::to_string(worst));
 }
 
-TEST(ContactAxial, NearlyCoaxialConesSlantsGoToThePlanes) {
+TEST(ContactAxial, NearlyCoaxialConesAndDiscsTakeTheRightPath) {
   // Stop 90's probe, nearly coaxial, the origin 1e-5 and 2e-4 off A - B's axis: a wide cone A
   // and a thin cone (or a short capsule) B inside it, whose least depth lies along A's slanted
   // side, 9e-4 and 0.17 of the size below the caps' values. The sides were sampled only
@@ -435,6 +435,23 @@ TEST(ContactAxial, NearlyCoaxialConesSlantsGoToThePlanes) {
     EXPECT_TRUE(expect_tilted_pair_exact(c.a, pa, c.b, pb, worst));
     EXPECT_LE(contact(c.a, pa, c.b, pb).iterations, 700);
     EXPECT_LE(contact(c.b, pb, c.a, pa).iterations, 700);
+  }
+  // A cone of no height is a disc, whose side is a cap: a cylinder's cap pressed 0.1 into it,
+  // nearly coaxial, has its least depth on the caps, and EPA in space closes it in about 35
+  // support calls. Sampled as a side, the disc's face tied the caps, and the planes took 460-890.
+  const Solid disc{Kind::Cone, 1.0, 0.0}, cylinder{Kind::Cylinder, 0.5, 0.5};
+  for (const double tilt : {1e-9, 1e-6, 1e-3}) {
+    for (const double off_axis : {1e-4, 1e-2}) {
+      SCOPED_TRACE(testing::Message() << "tilt " << tilt << " off the axis " << off_axis);
+      const Pose pa = Pose::from(Vec3(3, -2, 1), Quat(0.3, 0.1, -0.7, 0.2).normalized());
+      Pose pb = pa;
+      pb.rotation =
+          pa.rotation * Eigen::AngleAxisd(tilt, Vec3(1, 1, 0).normalized()).toRotationMatrix();
+      pb.translation += pa.rotation * Vec3(off_axis, 0, 0.4);
+      EXPECT_TRUE(expect_tilted_pair_exact(disc, pa, cylinder, pb, worst));
+      EXPECT_LE(contact(disc, pa, cylinder, pb).iterations, 150);
+      EXPECT_LE(contact(cylinder, pb, disc, pa).iterations, 150);
+    }
   }
 }
 
