@@ -70,8 +70,9 @@ struct CoreAxis {
   AxisKind kind = AxisKind::None;
   Vec3T<S> centre = Vec3T<S>::Zero();  ///< a point of the axis (local frame)
   Vec3T<S> axis = Vec3T<S>::UnitZ();   ///< unit (local frame), for AxisKind::Line
-  /// A cone's side normal along the axis: the sine of its lean from the plane across the axis;
-  /// 0 for the other cores, whose flat sides (if any) lie along the axis or across it.
+  /// A cone's side normal along the axis: the sine of its lean from the plane across the axis,
+  /// in (0, 1); 0 for the other cores, whose flat sides (if any) lie along the axis or across it,
+  /// as a disc's (a cone of no height, or so little that the sine rounds to 1) does.
   S slant = S(0);
 };
 
@@ -88,10 +89,9 @@ template <class S>
 struct AxialCore<ConeT<S>> : std::true_type {
   static CoreAxis<S> of(const ConeT<S>& c) {
     // The side from the rim (radius, -h) to the apex (0, h) has the normal (2h, radius).
-    const S run = S(2) * c.half_height;
-    const S length = std::hypot(run, c.radius);
-    return {AxisKind::Line, Vec3T<S>::Zero(), Vec3T<S>::UnitZ(),
-            length > S(0) ? c.radius / length : S(0)};
+    const S length = planar_length(S(2) * c.half_height, c.radius);
+    const S sine = length > S(0) ? c.radius / length : S(0);
+    return {AxisKind::Line, Vec3T<S>::Zero(), Vec3T<S>::UnitZ(), sine < S(1) ? sine : S(0)};
   }
 };
 /// A capsule of no length is a sphere, symmetric about every line through its centre, as a
@@ -687,9 +687,9 @@ bool epa_suits_tilted_axes(const CoreDifference<A, B>& diff,
   for (const S sine : {S(0.25881904510252074), S(0.5), S(0.70710678118654752),
                        S(0.86602540378443865), S(0.96592582628906829)})  // 15, 30, ..., 75 degrees
     lean(sine);
-  // A cone of no height is a disc: its side is a cap, which must not count among the sides.
+  // A disc's slant is 0: its side is a cap, which must not count among the sides.
   for (const S slant : {axes.a.slant, axes.b.slant})
-    if (slant > S(0) && slant < S(1)) lean(slant);
+    if (slant > S(0)) lean(slant);
   return caps < sides;
 }
 
