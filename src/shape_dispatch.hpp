@@ -1,7 +1,6 @@
-// Run-time dispatch shared by the query files (src/shape_*.cpp): a single-core Shape becomes its
+// Run-time dispatch for the queries of src/shape_queries.cpp: a single-core Shape becomes its
 // concrete core type with the radius attached, so the algorithms inline the support mapping; sums
-// of several cores use Shape itself. Each query lives in its own file so that the instantiations
-// over every pair of core types compile in parallel.
+// of several cores use Shape itself.
 #pragma once
 
 #include <cstddef>
