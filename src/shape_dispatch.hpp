@@ -51,6 +51,12 @@ struct SolidCore<PolytopeRef> : SolidCore<Polytope> {
   static const Core* core(const PolytopeRef& p) { return p.polytope->face_planes(); }
 };
 
+/// Its polytope, for the first support call of two small polytopes (query/polytope_pair.hpp).
+template <>
+struct PolytopeCore<PolytopeRef> : std::true_type {
+  static const Polytope& of(const PolytopeRef& p) { return *p.polytope; }
+};
+
 /// A hull shape held by pointer: support climbs from the shape's shared hint.
 struct HullRef {
   using Scalar = double;

@@ -22,6 +22,8 @@
 #include "mink/gjk/gjk.hpp"
 #include "mink/query/point_solid.hpp"
 #include "mink/shapes/face_planes.hpp"
+#include "mink/shapes/polytope.hpp"
+#include "mink/support/rounded.hpp"
 
 namespace mink::detail {
 
@@ -33,6 +35,19 @@ constexpr bool has_face_planes() {
   else
     return false;
 }
+
+/// The polytope of a core that is one: PolytopeT and Rounded<PolytopeT> here, the run-time Shape's
+/// PolytopeRef in src/shape_dispatch.hpp. Every core with face planes is one of them.
+template <class T>
+struct PolytopeCore : std::false_type {};
+template <class S>
+struct PolytopeCore<PolytopeT<S>> : std::true_type {
+  static const PolytopeT<S>& of(const PolytopeT<S>& p) { return p; }
+};
+template <class T>
+requires(PolytopeCore<T>::value) struct PolytopeCore<Rounded<T>> : std::true_type {
+  static const auto& of(const Rounded<T>& r) { return PolytopeCore<T>::of(r.shape); }
+};
 
 template <class A, class B>
 inline constexpr bool kPolytopePair = has_face_planes<A>() && has_face_planes<B>();
@@ -62,21 +77,38 @@ inline constexpr double kTransposeSlack = 4e-6;
 /// out of line, the first point and its direction went back through memory, and Clang took
 /// 33.2 ns for a polytope8 pair apart against 25.5 ns inlined (GCC 34.0 -> 32.6 ns; overlapping
 /// pairs 55.7 -> 53.7 ns under Clang, 63.7 -> 65.2 ns under GCC).
+///
+/// The separating plane is tested first on the two scans' support values: the gap along d is
+/// t.d - h_A(d) - h_B(-R^T d), (R, t) B's pose in A's frame. The values are ready before either
+/// support point is loaded and B's is moved to A's frame, so a pair apart is told so without
+/// waiting on that chain (polytope8 pairs apart: 33.5 -> 27.3 ns in gjk_bench, 40.7 -> 30.8 ns
+/// in a driver). A pair the values leave undecided goes on with the points, as before; their own
+/// product decides the same but for rounding.
 template <ConvexShape A, ConvexShape B>
 [[gnu::always_inline]] inline EncloseVerdict first_support_verdict(
     const CoreDifference<A, B>& diff, typename A::Scalar inside,
     PointAndDirection<typename A::Scalar>& first) {
   using S = typename A::Scalar;
   const Vec3T<S> d = first_direction(diff);
-  const Vec3T<S> on_a = diff.a.support_core(d);
-  const Vec3T<S> on_b =
-      diff.rotation * diff.b.support_core(diff.direction_in_b(d)) + diff.translation;
-  first.w = on_a - on_b;  // as CoreDifference::support_point() computes it
+  const S d_sq = d.squaredNorm();
   first.dir = d;
+  const auto& polytope_a = PolytopeCore<A>::of(diff.a);
+  const auto& polytope_b = PolytopeCore<B>::of(diff.b);
+  const SupportHit<S> hit_a = polytope_a.support_core_hit(d);
+  const SupportHit<S> hit_b = polytope_b.support_core_hit(diff.direction_in_b(d));
+  // (B's point, moved) . d = its value along -R^T d, negated, plus the offset along d. A NaN or an
+  // infinite gap leaves the verdict to the points.
+  const S value_gap = diff.translation.dot(d) - hit_a.value - hit_b.value;
+  if (value_gap <= std::numeric_limits<S>::max() &&
+      exceeds_times_length(value_gap, inside, d, d_sq))
+    return EncloseVerdict::Separated;
+  const Vec3T<S> on_a = polytope_a.point(hit_a.index);
+  const Vec3T<S> on_b = diff.rotation * polytope_b.point(hit_b.index) + diff.translation;
+  first.w = on_a - on_b;  // as CoreDifference::support_point() computes it
   const S wd = first.w.dot(d);
   if (!(wd >= S(0)))
-    return exceeds_times_length(-wd, inside, d, S(d.squaredNorm())) ? EncloseVerdict::Separated
-                                                                    : EncloseVerdict::Unsure;
+    return exceeds_times_length(-wd, inside, d, d_sq) ? EncloseVerdict::Separated
+                                                      : EncloseVerdict::Unsure;
   if (const FacePlanesT<S>* planes_a = SolidCore<A>::core(diff.a))
     if (below_face_planes(*planes_a, on_b, S(0))) return EncloseVerdict::Intersecting;
   if (const FacePlanesT<S>* planes_b = SolidCore<B>::core(diff.b)) {

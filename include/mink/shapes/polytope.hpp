@@ -153,6 +153,17 @@ class PolytopeT {
     return lazy_hull_ ? lazy_support_index(d) : scan_index(d);
   }
 
+  /// support_index() with the support value of the core, h(d) = max over the points of p.d: for
+  /// tests that need only how far the polytope reaches along d, which the scan of 8 points or
+  /// fewer has before the point's index (support_scan.hpp).
+  [[gnu::always_inline]] inline detail::SupportHit<S> support_core_hit(const Vec3T<S>& d) const {
+    if (lazy_hull_) {
+      const std::size_t i = lazy_support_index(d);
+      return {detail::point_dot(x_.data(), y_.data(), z_.data(), i, d.x(), d.y(), d.z()), i};
+    }
+    return detail::support_hit(x_.data(), y_.data(), z_.data(), x_.size(), d.x(), d.y(), d.z());
+  }
+
   /// The brute-force answer, whatever support_index does: lowest index among the farthest.
   [[gnu::always_inline]] inline std::size_t scan_index(const Vec3T<S>& d) const {
     return detail::support_index(x_.data(), y_.data(), z_.data(), x_.size(), d.x(), d.y(), d.z());

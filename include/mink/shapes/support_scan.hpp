@@ -11,6 +11,7 @@
 /// compare every SIMD path against it.
 ///
 /// Result: the lowest index among the points farthest along d. With a NaN direction, 0.
+/// support_hit() also gives that point's dot product with d, the point set's support value.
 #pragma once
 
 #include <bit>
@@ -35,19 +36,45 @@
 
 namespace mink::detail {
 
+/// The support point's index and its dot product with the direction, `value`: the largest over
+/// the points (-inf or NaN for a NaN direction, whose index is 0).
 template <class S>
-std::size_t support_index_scalar(const S* xs, const S* ys, const S* zs, std::size_t n, S dx, S dy,
+struct SupportHit {
+  S value;
+  std::size_t index;
+};
+
+/// Point i's dot product with d, as every scan computes it (no fused multiply-add).
+template <class S>
+[[gnu::always_inline]] inline S point_dot(const S* xs, const S* ys, const S* zs, std::size_t i,
+                                          S dx, S dy, S dz) {
+  return xs[i] * dx + ys[i] * dy + zs[i] * dz;
+}
+
+template <class S>
+SupportHit<S> support_hit_scalar(const S* xs, const S* ys, const S* zs, std::size_t n, S dx, S dy,
                                  S dz) {
   S best = -std::numeric_limits<S>::infinity();
   std::size_t best_i = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const S dot = xs[i] * dx + ys[i] * dy + zs[i] * dz;
+    const S dot = point_dot(xs, ys, zs, i, dx, dy, dz);
     if (dot > best) {
       best = dot;
       best_i = i;
     }
   }
-  return best_i;
+  return {best, best_i};
+}
+
+template <class S>
+std::size_t support_index_scalar(const S* xs, const S* ys, const S* zs, std::size_t n, S dx, S dy,
+                                 S dz) {
+  return support_hit_scalar(xs, ys, zs, n, dx, dy, dz).index;
+}
+
+template <class S>
+SupportHit<S> support_hit(const S* xs, const S* ys, const S* zs, std::size_t n, S dx, S dy, S dz) {
+  return support_hit_scalar(xs, ys, zs, n, dx, dy, dz);
 }
 
 template <class S>
@@ -60,9 +87,9 @@ std::size_t support_index(const S* xs, const S* ys, const S* zs, std::size_t n, 
 /// of vector maxima, and the first index that reaches it from the lanes' equality masks, with no
 /// branch on the data. A NaN dot product (a NaN direction, or inf times a 0 coordinate) counts as
 /// -inf, as it never wins in the scalar twin; lanes past n hold -inf and are masked off.
-[[gnu::always_inline]] inline std::size_t support_index_few(const double* xs, const double* ys,
-                                                            const double* zs, std::size_t n,
-                                                            double dx, double dy, double dz) {
+[[gnu::always_inline]] inline SupportHit<double> support_hit_few(const double* xs, const double* ys,
+                                                                 const double* zs, std::size_t n,
+                                                                 double dx, double dy, double dz) {
   constexpr double kLow = -std::numeric_limits<double>::infinity();
   const __m128d vx = _mm_set1_pd(dx), vy = _mm_set1_pd(dy), vz = _mm_set1_pd(dz);
   const __m128d low = _mm_set1_pd(kLow);
@@ -74,7 +101,7 @@ std::size_t support_index(const S* xs, const S* ys, const S* zs, std::size_t n, 
           _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(xs + i), vx), _mm_mul_pd(_mm_loadu_pd(ys + i), vy)),
           _mm_mul_pd(_mm_loadu_pd(zs + i), vz));
     else
-      dots[c] = _mm_set_pd(kLow, i < n ? xs[i] * dx + ys[i] * dy + zs[i] * dz : kLow);
+      dots[c] = _mm_set_pd(kLow, i < n ? point_dot(xs, ys, zs, i, dx, dy, dz) : kLow);
     // maxpd returns its second operand when the first is NaN.
     dots[c] = _mm_max_pd(dots[c], low);
   }
@@ -84,7 +111,15 @@ std::size_t support_index(const S* xs, const S* ys, const S* zs, std::size_t n, 
   for (int c = 0; c < 4; ++c)
     mask |= unsigned(_mm_movemask_pd(_mm_cmpeq_pd(dots[c], best))) << (2 * c);
   mask &= (1u << n) - 1;
-  return mask == 0 ? 0 : std::size_t(std::countr_zero(mask));  // 0: no points
+  // The maximum is ready before the index: a caller that needs only the value (or tests it first)
+  // does not wait for the mask and the point's load.
+  return {_mm_cvtsd_f64(best), mask == 0 ? 0 : std::size_t(std::countr_zero(mask))};  // 0: none
+}
+
+[[gnu::always_inline]] inline std::size_t support_index_few(const double* xs, const double* ys,
+                                                            const double* zs, std::size_t n,
+                                                            double dx, double dy, double dz) {
+  return support_hit_few(xs, ys, zs, n, dx, dy, dz).index;
 }
 
 /// More than 8 points: blocks of 4 W dot products. The dot products and each block's maximum are
@@ -136,7 +171,7 @@ template <int W>
       }
   }
   for (; i < n; ++i) {
-    const double dot = xs[i] * dx + ys[i] * dy + zs[i] * dz;
+    const double dot = point_dot(xs, ys, zs, i, dx, dy, dz);
     if (dot > best) {
       best = dot;
       best_i = i;
@@ -190,6 +225,19 @@ template <>
 #endif
   return support_index_many_sse2(xs, ys, zs, n, dx, dy, dz);
 #endif
+}
+
+/// The same, with the support value: for more than 8 points the winner's dot product again,
+/// computed as the scans compute it.
+template <>
+[[gnu::always_inline]] inline SupportHit<double> support_hit<double>(const double* xs,
+                                                                     const double* ys,
+                                                                     const double* zs,
+                                                                     std::size_t n, double dx,
+                                                                     double dy, double dz) {
+  if (n <= 8) return support_hit_few(xs, ys, zs, n, dx, dy, dz);
+  const std::size_t i = support_index<double>(xs, ys, zs, n, dx, dy, dz);
+  return {point_dot(xs, ys, zs, i, dx, dy, dz), i};
 }
 #endif
 

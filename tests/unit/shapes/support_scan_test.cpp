@@ -3,7 +3,9 @@
 // build chooses, and each instruction set's scan called directly (AVX2 where this CPU has it).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -151,6 +153,48 @@ TEST(SupportScan, FewPointsMatchTheScalarTwin) {
       const Vec3 d_inf(trial % 2 ? inf : -inf, d.y(), d.z());
       EXPECT_EQ(s.index(d_inf), s.scalar(d_inf)) << n << " points, an infinite direction";
     }
+  }
+}
+
+TEST(SupportScan, HitsCarryTheLargestDotProduct) {
+  // support_hit(): the scan's index and, as its value, the largest dot product over the points,
+  // taken here point by point; 1 to 40 points (the inlined path up to 8, the blocks beyond), and
+  // Polytope::support_core_hit() the same, also once the polytope climbs its hull (64 points).
+  std::mt19937_64 rng(94);
+  std::normal_distribution<double> g;
+  auto largest_dot = [](const Soa& s, const Vec3& d) {
+    double best = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      best = std::max(best, s.x[i] * d.x() + s.y[i] * d.y() + s.z[i] * d.z());
+    return best;
+  };
+  for (std::size_t n = 1; n <= 40; ++n) {
+    Soa s;
+    for (std::size_t i = 0; i < n; ++i) {
+      s.x.push_back(g(rng));
+      s.y.push_back(g(rng));
+      s.z.push_back(g(rng));
+    }
+    for (int k = 0; k < 50; ++k) {
+      const Vec3 d(g(rng), g(rng), g(rng));
+      const detail::SupportHit<double> hit =
+          detail::support_hit(s.x.data(), s.y.data(), s.z.data(), n, d.x(), d.y(), d.z());
+      EXPECT_EQ(hit.index, s.scalar(d)) << n << " points";
+      EXPECT_EQ(hit.value, largest_dot(s, d)) << n << " points";
+    }
+  }
+  for (std::size_t n : {5u, 8u, 30u, 64u}) {
+    std::vector<Vec3> points;
+    for (std::size_t i = 0; i < n; ++i) points.emplace_back(g(rng), g(rng), g(rng));
+    const Polytope p = Polytope::make(points).value();
+    for (int k = 0; k < 2 * int(kPolytopeHullAfterSupports) + 20; ++k) {
+      const Vec3 d(g(rng), g(rng), g(rng));
+      const detail::SupportHit<double> hit = p.support_core_hit(d);
+      const Vec3 point = p.support_core(d);
+      EXPECT_EQ(p.point(hit.index), point) << n << " points";
+      EXPECT_NEAR(hit.value, point.dot(d), 1e-14 * point.norm() * d.norm()) << n << " points";
+    }
+    if (n >= kHullClimbMinVertices) EXPECT_TRUE(p.climbs());
   }
 }
 
