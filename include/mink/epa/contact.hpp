@@ -227,7 +227,9 @@ ContactResultT<typename A::Scalar> contact_in_range(
     }
     // Touching or apart: GJK below.
   }
-  const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
+  auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
+  detail::FramedPointsT<S> b_points;  // a small polytope B's points in A's frame
+  detail::frame_points_of_b(diff, b_points);
   // Overlapping cores with no radius: the boolean test's first phase encloses the origin in a
   // tetrahedron for less than the distance loop, and EPA starts from it; boxes come here only
   // touching or apart, where it would prove nothing.

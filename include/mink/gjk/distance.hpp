@@ -173,7 +173,7 @@ DistanceResultT<typename A::Scalar> distance_in_range(
       return result;
     }
   }
-  const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
+  auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
   const S radius_a = a.core_radius(), radius_b = b.core_radius();
   const S size = a.bounding_radius() + b.bounding_radius();
   constexpr bool kBoxes = detail::BoxCore<A>::value && detail::BoxCore<B>::value;
@@ -210,6 +210,8 @@ DistanceResultT<typename A::Scalar> distance_in_range(
   // Overlapping cores with no radius: the boolean test's first phase proves most of them enclosed
   // for less than the distance loop (run_gjk_distance()); boxes have had the test above.
   constexpr auto kPhase = kBoxes ? detail::EnclosePhase::Off : detail::EnclosePhase::Verdict;
+  detail::FramedPointsT<S> b_points;  // a small polytope B's points in A's frame
+  detail::frame_points_of_b(diff, b_points);
   const auto gjk = detail::gjk_apart<kPhase>(diff, radius_a + radius_b, size, tolerances, cache);
   result.status = gjk.status;
   result.iterations = gjk.iterations;

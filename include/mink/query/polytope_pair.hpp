@@ -23,7 +23,7 @@
 #include "mink/query/point_solid.hpp"
 #include "mink/shapes/face_planes.hpp"
 #include "mink/shapes/polytope.hpp"
-#include "mink/support/rounded.hpp"
+#include "mink/support/polytope_core.hpp"
 
 namespace mink::detail {
 
@@ -36,19 +36,7 @@ constexpr bool has_face_planes() {
     return false;
 }
 
-/// The polytope of a core that is one: PolytopeT and Rounded<PolytopeT> here, the run-time Shape's
-/// PolytopeRef in src/shape_dispatch.hpp. Every core with face planes is one of them.
-template <class T>
-struct PolytopeCore : std::false_type {};
-template <class S>
-struct PolytopeCore<PolytopeT<S>> : std::true_type {
-  static const PolytopeT<S>& of(const PolytopeT<S>& p) { return p; }
-};
-template <class T>
-requires(PolytopeCore<T>::value) struct PolytopeCore<Rounded<T>> : std::true_type {
-  static const auto& of(const Rounded<T>& r) { return PolytopeCore<T>::of(r.shape); }
-};
-
+/// Every core with face planes is a PolytopeCore (support/polytope_core.hpp).
 template <class A, class B>
 inline constexpr bool kPolytopePair = has_face_planes<A>() && has_face_planes<B>();
 
