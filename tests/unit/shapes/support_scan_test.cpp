@@ -32,6 +32,18 @@ struct Soa {
   }
 };
 
+/// n points whose coordinates are drawn from `g`, point by point.
+template <class Rng>
+Soa random_soa(Rng& rng, std::normal_distribution<double>& g, std::size_t n) {
+  Soa s;
+  for (std::size_t i = 0; i < n; ++i) {
+    s.x.push_back(g(rng));
+    s.y.push_back(g(rng));
+    s.z.push_back(g(rng));
+  }
+  return s;
+}
+
 /// Whether this machine can run the AVX2 scan (where it cannot, only the others are checked).
 bool can_run_avx2() {
 #if defined(__AVX2__)
@@ -90,12 +102,7 @@ TEST(SupportScan, MatchesScalarTwinOnRandomClouds) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> g;
   for (std::size_t n = 1; n <= 100; ++n) {
-    Soa s;
-    for (std::size_t i = 0; i < n; ++i) {
-      s.x.push_back(g(rng));
-      s.y.push_back(g(rng));
-      s.z.push_back(g(rng));
-    }
+    Soa s = random_soa(rng, g, n);
     for (int k = 0; k < 200; ++k)
       expect_every_scan_matches(s, Vec3(g(rng), g(rng), g(rng)), "random");
     for (std::size_t i = 0; i < 7 && i < n; ++i) {
@@ -169,12 +176,7 @@ TEST(SupportScan, HitsCarryTheLargestDotProduct) {
     return best;
   };
   for (std::size_t n = 1; n <= 40; ++n) {
-    Soa s;
-    for (std::size_t i = 0; i < n; ++i) {
-      s.x.push_back(g(rng));
-      s.y.push_back(g(rng));
-      s.z.push_back(g(rng));
-    }
+    Soa s = random_soa(rng, g, n);
     for (int k = 0; k < 50; ++k) {
       const Vec3 d(g(rng), g(rng), g(rng));
       const detail::SupportHit<double> hit =
