@@ -861,8 +861,9 @@ template <ConvexShape A, ConvexShape B>
 /// For distance() and contact(), whose GJK and EPA call B's support several times: when B's core
 /// is a polytope of at most FramedPointsT::kMaxPoints points, moves them into `framed` (A's frame,
 /// by the same product as CoreDifference::support() moves its answer) and has `diff` scan them.
-/// Not for the boolean test, most of whose pairs one support call decides: the move costs about
-/// two calls. `framed` must outlive `diff`'s use.
+/// Not for the boolean test, most of whose pairs one support call decides: the move cost more
+/// than that call (polytope8 pairs apart, +30 ns when stop 34 tried it; docs/benchmarks.md).
+/// `framed` must outlive `diff`'s use.
 template <ConvexShape A, ConvexShape B>
 [[gnu::always_inline]] inline void frame_points_of_b(CoreDifference<A, B>& diff,
                                                      FramedPointsT<typename A::Scalar>& framed) {
