@@ -159,7 +159,8 @@ class PolytopeT {
   [[gnu::always_inline]] inline detail::SupportHit<S> support_core_hit(const Vec3T<S>& d) const {
     if (lazy_hull_) {
       const std::size_t i = lazy_support_index(d);
-      return {detail::point_dot(x_.data(), y_.data(), z_.data(), i, d.x(), d.y(), d.z()), i};
+      return detail::SupportHit<S>::of(
+          detail::point_dot(x_.data(), y_.data(), z_.data(), i, d.x(), d.y(), d.z()), i);
     }
     return detail::support_hit(x_.data(), y_.data(), z_.data(), x_.size(), d.x(), d.y(), d.z());
   }

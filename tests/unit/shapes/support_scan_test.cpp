@@ -181,7 +181,7 @@ TEST(SupportScan, HitsCarryTheLargestDotProduct) {
       const Vec3 d(g(rng), g(rng), g(rng));
       const detail::SupportHit<double> hit =
           detail::support_hit(s.x.data(), s.y.data(), s.z.data(), n, d.x(), d.y(), d.z());
-      EXPECT_EQ(hit.index, s.scalar(d)) << n << " points";
+      EXPECT_EQ(hit.index(), s.scalar(d)) << n << " points";
       EXPECT_EQ(hit.value, largest_dot(s, d)) << n << " points";
     }
   }
@@ -193,7 +193,7 @@ TEST(SupportScan, HitsCarryTheLargestDotProduct) {
       const Vec3 d(g(rng), g(rng), g(rng));
       const detail::SupportHit<double> hit = p.support_core_hit(d);
       const Vec3 point = p.support_core(d);
-      EXPECT_EQ(p.point(hit.index), point) << n << " points";
+      EXPECT_EQ(p.point(hit.index()), point) << n << " points";
       EXPECT_NEAR(hit.value, point.dot(d), 1e-14 * point.norm() * d.norm()) << n << " points";
     }
     if (n >= kHullClimbMinVertices) EXPECT_TRUE(p.climbs());
