@@ -118,10 +118,10 @@ std::size_t support_index(const S* xs, const S* ys, const S* zs, std::size_t n, 
 }
 
 #if defined(__SSE2__)
-/// At most 8 points (SSE2, also under AVX2): the dot products in pairs and their
-/// maximum by a tree of vector maxima; the index comes from the lanes
-/// (SupportHit<double>::index()). A NaN dot product (a NaN direction, or inf times a 0 coordinate)
-/// counts as -inf, as it never wins in the scalar twin; lanes past n hold -inf and are masked off.
+/// At most 8 points (SSE2, also under AVX2): the dot products in pairs and their maximum by a tree
+/// of vector maxima; the index comes from the lanes when asked (SupportHit<double>::index()). A NaN
+/// dot product (a NaN direction, or inf times a 0 coordinate) counts as -inf, as it never wins in
+/// the scalar twin; lanes past n hold -inf and are masked off.
 [[gnu::always_inline]] inline SupportHit<double> support_hit_few(const double* xs, const double* ys,
                                                                  const double* zs, std::size_t n,
                                                                  double dx, double dy, double dz) {
@@ -143,8 +143,6 @@ std::size_t support_index(const S* xs, const S* ys, const S* zs, std::size_t n, 
   }
   const __m128d pair_max = _mm_max_pd(_mm_max_pd(dots[0], dots[1]), _mm_max_pd(dots[2], dots[3]));
   hit.best = _mm_max_pd(pair_max, _mm_shuffle_pd(pair_max, pair_max, 1));
-  // The maximum is ready before the index: a caller that needs only the value (or tests it first)
-  // does not wait for the mask and the point's load.
   hit.value = _mm_cvtsd_f64(hit.best);
   hit.count = n;
   return hit;
