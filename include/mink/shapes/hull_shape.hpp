@@ -46,10 +46,14 @@
 /// the caller (for instance in GjkCache) would be best, but needs the support concept to take it
 /// (climb_index(d, start) is that entry point, ready for it).
 ///
-/// Layout. Positions twice: three arrays for the scan, and per vertex a record (position, edge
-/// range); the edges (CSR adjacency) carry their end vertex's position and edge range inline, so a
-/// climb step reads one contiguous run of about six 40-byte edges and nothing else. About 300
-/// bytes per vertex in double.
+/// Layout. Positions twice: three arrays for the scan, and per vertex a 64-byte record (position,
+/// edge range, and up to eight neighbours' indices inline) for the climb, whose step reads its
+/// vertex's record and then the neighbours' records, all at once; a vertex of higher degree reads
+/// its neighbours from the CSR edge list. About 130 bytes per vertex in double, all told. Until
+/// stop 97 the edges carried their end's position and range inline (a step read one run of
+/// 40-byte edges; about 300 bytes per vertex). gjk_bench's 32 hulls of 512 vertices did not fit
+/// the 1 MB second-level cache that way; the compact records cut contact of their overlapping
+/// pairs by 9 %, and cold support calls on 100,000 vertices by 27 % (docs/benchmarks.md).
 ///
 /// Small hulls scan. Below kHullClimbMinVertices vertices the vectorised scan of
 /// shapes/support_scan.hpp is faster than climbing (measured in bench/hull_support_bench.cpp,
@@ -144,7 +148,7 @@ class ConvexHullShapeT {
       shape.y_[i] = p.y();
       shape.z_[i] = p.z();
       shape.input_indices_[i] = hull.vertices[i].input_index;
-      shape.nodes_[i] = Node{{p.x(), p.y(), p.z()}, offsets[i], offsets[i + 1]};
+      shape.nodes_[i] = Node{{p.x(), p.y(), p.z()}, offsets[i], offsets[i + 1], {}};
       shape.bounding_radius_ = std::max(shape.bounding_radius_, detail::length_of(p));
       shape.centre_ += p / S(n);  // divided first: no overflow near the largest doubles
     }
@@ -152,9 +156,11 @@ class ConvexHullShapeT {
     for (std::size_t k = 0; k < hull.neighbors.size(); ++k) {
       const std::uint32_t u = hull.neighbors[k];
       if (u >= n) return Result::failure("convex hull adjacency is inconsistent");
-      const Node& to = shape.nodes_[u];
-      shape.edges_[k] = Edge{{to.p[0], to.p[1], to.p[2]}, u, to.begin, to.end};
+      shape.edges_[k] = u;
     }
+    for (Node& node : shape.nodes_)
+      if (node.end - node.begin <= kInlineNeighbors)
+        std::copy(shape.edges_.begin() + node.begin, shape.edges_.begin() + node.end, node.near);
     if (!shape.copy_faces(hull)) return Result::failure("convex hull faces are inconsistent");
     shape.climbs_ = n >= kHullClimbMinVertices;
     if (shape.climbs_) shape.build_seeds();
@@ -261,7 +267,7 @@ class ConvexHullShapeT {
   /// Calls f(u) for each neighbour u of vertex v (< size()) on the hull's edge graph.
   template <class F>
   void for_each_neighbor(std::uint32_t v, F&& f) const {
-    for (std::uint32_t k = nodes_[v].begin; k < nodes_[v].end; ++k) f(edges_[k].to);
+    for (std::uint32_t k = nodes_[v].begin; k < nodes_[v].end; ++k) f(edges_[k]);
   }
 
   /// Faces (none for Segment and Point hulls; two opposite ones for Flat): unit outward normals and
@@ -309,17 +315,20 @@ class ConvexHullShapeT {
   }
 
  private:
-  /// A vertex: its position and the range of its edges in edges_.
-  struct Node {
+  /// Neighbours a vertex record holds inline: 8 indices fill a 64-byte record in double.
+  static constexpr std::uint32_t kInlineNeighbors = 8;
+  /// A vertex: its position, the range of its edges in edges_ and, when it has at most
+  /// kInlineNeighbors of them, the neighbours' indices. One cache line: a climb step reads it and
+  /// then its neighbours' records, all at once.
+  struct alignas(64) Node {
     S p[3];
     std::uint32_t begin, end;
+    std::uint32_t near[kInlineNeighbors];
   };
-  /// An edge from a vertex to a neighbour, with the neighbour's position and edge range inline,
-  /// so a climb step reads its vertex's edges in one sequential run and no other memory.
-  struct Edge {
-    S p[3];
-    std::uint32_t to, begin, end;
-  };
+  /// Vertex `node`'s neighbours: inline, or in edges_ for a vertex of higher degree.
+  const std::uint32_t* neighbors_of(const Node& node) const {
+    return node.end - node.begin <= kInlineNeighbors ? node.near : edges_.data() + node.begin;
+  }
 
   ConvexHullShapeT() = default;
 
@@ -405,25 +414,25 @@ class ConvexHullShapeT {
   std::uint32_t climb(const Vec3T<S>& d, std::uint32_t start, S best) const {
     const S dx = d.x(), dy = d.y(), dz = d.z();
     std::uint32_t v = start;
-    std::uint32_t begin = nodes_[v].begin, end = nodes_[v].end;
+    const Node* node = &nodes_[v];
     // Each move strictly increases the support value, so at most size() - 1 moves can happen.
     for (std::size_t moves = 0; moves < nodes_.size(); ++moves) {
-      std::uint32_t next = end;  // none
+      const std::uint32_t degree = node->end - node->begin;
+      const std::uint32_t* near = neighbors_of(*node);
+      std::uint32_t next = v;  // none
       S next_value = best;
       bool tie = false;
-      for (std::uint32_t k = begin; k < end; ++k) {
-        const S value = dot(edges_[k].p, dx, dy, dz);
+      for (std::uint32_t k = 0; k < degree; ++k) {
+        const S value = dot(nodes_[near[k]].p, dx, dy, dz);
         if (value > next_value) {
           next_value = value;
-          next = k;
+          next = near[k];
         }
         tie |= value == best;
       }
-      if (next == end) return tie ? plateau_index(d, v, best) : v;
-      const Edge& e = edges_[next];
-      v = e.to;
-      begin = e.begin;
-      end = e.end;
+      if (next == v) return tie ? plateau_index(d, v, best) : v;
+      v = next;
+      node = &nodes_[v];
       best = next_value;
     }
     return std::uint32_t(scan_index(d));  // unreachable in exact arithmetic: a safety net
@@ -441,17 +450,18 @@ class ConvexHullShapeT {
     std::uint32_t lowest = v;
     for (std::size_t i = 0; i < count; ++i) {
       const Node& node = nodes_[set[i]];
-      for (std::uint32_t k = node.begin; k < node.end; ++k) {
-        const Edge& e = edges_[k];
-        const S value = dot(e.p, dx, dy, dz);
+      const std::uint32_t* near = neighbors_of(node);
+      for (std::uint32_t k = 0; k < node.end - node.begin; ++k) {
+        const std::uint32_t to = near[k];
+        const S value = dot(nodes_[to].p, dx, dy, dz);
         if (value > best) return std::uint32_t(scan_index(d));
         if (value != best) continue;
         bool seen = false;
-        for (std::size_t j = 0; j < count; ++j) seen |= set[j] == e.to;
+        for (std::size_t j = 0; j < count; ++j) seen |= set[j] == to;
         if (seen) continue;
         if (count == kHullPlateauLimit) return std::uint32_t(scan_index(d));
-        set[count++] = e.to;
-        lowest = std::min(lowest, e.to);
+        set[count++] = to;
+        lowest = std::min(lowest, to);
       }
     }
     return lowest;
@@ -460,8 +470,9 @@ class ConvexHullShapeT {
   std::vector<S> x_, y_, z_;                  // structure of arrays, for the scan
   std::vector<Node> nodes_;                   // array of structures, for the climb
   std::vector<std::uint32_t> input_indices_;  // vertex -> index of its input point
-  std::vector<Edge> edges_;           // CSR adjacency: vertex v's edges are nodes_[v].begin .. end
-  std::vector<std::uint32_t> seeds_;  // direction table, 6 k k entries (empty when scanning)
+  std::vector<std::uint32_t>
+      edges_;  // CSR adjacency: v's neighbours are edges_[nodes_[v].begin, end)
+  std::vector<std::uint32_t> seeds_;    // direction table, 6 k k entries (empty when scanning)
   std::vector<Vec3T<S>> face_normals_;  // unit, outward
   // CSR lists: face f's vertex loop, and the faces around vertex v.
   std::vector<std::uint32_t> face_begin_, face_loops_, vertex_face_begin_, vertex_faces_;
