@@ -137,7 +137,7 @@ class PolytopeT {
 
   /// Always inlined, as support_index() is: the body of every GJK and EPA iteration.
   [[gnu::always_inline]] inline Vec3T<S> support_core(const Vec3T<S>& d) const {
-    return point(support_index(d));
+    return lazy_hull_ ? lazy_support_core(d) : point(scan_index(d));
   }
   /// The mean of the points: inside the hull (any one point may be a vertex, on its boundary).
   const Vec3T<S>& core_centre() const { return centre_; }
@@ -213,14 +213,26 @@ class PolytopeT {
     return scan_index(d);
   }
 
+  /// support_core() of a polytope that may climb: the hull's point once built (the same
+  /// coordinates, read where the climb ended), else the scan's, counted.
+  [[gnu::noinline]] Vec3T<S> lazy_support_core(const Vec3T<S>& d) const {
+    if (const auto* climb = lazy_hull_->ready()) return climb->hull.support_core(d);
+    lazy_hull_->count_towards(kPolytopeHullAfterSupports, [this] { return build_hull(); });
+    return point(scan_index(d));
+  }
+
   std::optional<detail::PolytopeHull<S>> build_hull() const {
     Expected<ConvexHullShapeT<S>> hull = ConvexHullShapeT<S>::make(points_as<S>());
     // A hull of finite points always builds; on a failure (a bug of the builder) keep scanning.
     if (!hull) return std::nullopt;
     detail::PolytopeHull<S> climb{std::move(hull).value(), {}};
     climb.point_of_vertex.resize(climb.hull.size());
-    for (std::size_t v = 0; v < climb.hull.size(); ++v)
+    // support_core() returns the hull's coordinates for the polytope's: they must be the same
+    // numbers (the builder copies its input; a failure here would be its bug: keep scanning).
+    for (std::size_t v = 0; v < climb.hull.size(); ++v) {
       climb.point_of_vertex[v] = climb.hull.input_index(v);
+      if (climb.hull.point(v) != point(climb.point_of_vertex[v])) return std::nullopt;
+    }
     return climb;
   }
 

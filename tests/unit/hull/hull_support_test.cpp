@@ -135,6 +135,17 @@ std::vector<Vec3> noisy_rims(int n, unsigned seed, double noise) {
   return p;
 }
 
+/// A cone over a regular n-gon: the apex has n neighbours, more than a vertex record holds inline
+/// (hull_shape.hpp), so its climb steps read the edge list.
+std::vector<Vec3> cone(int n) {
+  std::vector<Vec3> p{Vec3(0.1, -0.2, 1.5)};
+  for (int i = 0; i < n; ++i) {
+    const double t = 6.283185307179586 * i / n;
+    p.emplace_back(std::cos(t), std::sin(t), 0);
+  }
+  return p;
+}
+
 struct SupportCase {
   std::string name;
   std::vector<Vec3> points;
@@ -184,6 +195,8 @@ void check_case(const SupportCase& c, unsigned seed, double& worst) {
     warm_start = warm;
     // The public path (hint and direction table) must give the climb's answer.
     ASSERT_EQ(shape->support_index(k % 2 ? d : warm_d), k % 2 ? cold : warm);
+    // support_core() reads the point from the vertex's record, not the scan's arrays: the same.
+    ASSERT_EQ(shape->support_core(k % 2 ? d : warm_d), shape->point(k % 2 ? cold : warm));
 
     for (const auto& [dir, got] : {std::pair{d, cold}, std::pair{warm_d, warm}}) {
       ASSERT_LT(got, n);
@@ -217,6 +230,7 @@ std::vector<SupportCase> default_cases() {
   cases.push_back({"segment", segment(1000, 9), 10000});
   cases.push_back({"point", std::vector<Vec3>(10, Vec3(0.5, -1, 2)), 1000});
   cases.push_back({"needle", needle(3000, 10), 32000});
+  cases.push_back({"cone over a 200-gon", cone(200), 32000});
   for (const auto& [thickness, name] : {std::pair{1e-9, "1e-9"}, {1e-7, "1e-7"}, {1e-5, "1e-5"}})
     for (int n : {64, 2000})
       cases.push_back({"thin disk " + std::to_string(n) + " " + name,
@@ -397,6 +411,8 @@ TEST(HullSupport, PolytopeSwitchesToItsHullAfterManyQueries) {
       const Vec3 d = unit(g) * std::ldexp(1.0, int(g() % 21) - 10);
       const std::size_t got = polytope->support_index(d);
       ASSERT_LT(got, c.points.size());
+      // The climb's position (hull_shape.hpp): the polytope's own point, to the bit.
+      ASSERT_EQ(polytope->support_core(d), c.points[got]) << k;
       const double value = dot(c.points[got], d), best = dot(c.points[polytope->scan_index(d)], d);
       ASSERT_GE(value, best - (tolerance + 8 * kEps * radius) * d.norm()) << k;
       ASSERT_LE(value, best) << k;
