@@ -476,8 +476,8 @@ class ConvexHullShapeT {
   std::vector<S> x_, y_, z_;                  // structure of arrays, for the scan
   std::vector<Node> nodes_;                   // array of structures, for the climb
   std::vector<std::uint32_t> input_indices_;  // vertex -> index of its input point
-  std::vector<std::uint32_t>
-      edges_;  // CSR adjacency: v's neighbours are edges_[nodes_[v].begin, end)
+  // CSR adjacency: vertex v's neighbours are edges_[nodes_[v].begin .. nodes_[v].end).
+  std::vector<std::uint32_t> edges_;
   std::vector<std::uint32_t> seeds_;    // direction table, 6 k k entries (empty when scanning)
   std::vector<Vec3T<S>> face_normals_;  // unit, outward
   // CSR lists: face f's vertex loop, and the faces around vertex v.
