@@ -273,7 +273,7 @@ class ConvexHullShapeT {
   /// Calls f(u) for each neighbour u of vertex v (< size()) on the hull's edge graph.
   template <class F>
   void for_each_neighbor(std::uint32_t v, F&& f) const {
-    for (std::uint32_t k = nodes_[v].begin; k < nodes_[v].end; ++k) f(edges_[k]);
+    for (const std::uint32_t u : neighbors_of(nodes_[v])) f(u);
   }
 
   /// Faces (none for Segment and Point hulls; two opposite ones for Flat): unit outward normals and
@@ -332,8 +332,9 @@ class ConvexHullShapeT {
     std::uint32_t near[kInlineNeighbors];
   };
   /// Vertex `node`'s neighbours: inline, or in edges_ for a vertex of higher degree.
-  const std::uint32_t* neighbors_of(const Node& node) const {
-    return node.end - node.begin <= kInlineNeighbors ? node.near : edges_.data() + node.begin;
+  std::span<const std::uint32_t> neighbors_of(const Node& node) const {
+    const std::uint32_t degree = node.end - node.begin;
+    return {degree <= kInlineNeighbors ? node.near : edges_.data() + node.begin, degree};
   }
 
   ConvexHullShapeT() = default;
@@ -423,16 +424,14 @@ class ConvexHullShapeT {
     const Node* node = &nodes_[v];
     // Each move strictly increases the support value, so at most size() - 1 moves can happen.
     for (std::size_t moves = 0; moves < nodes_.size(); ++moves) {
-      const std::uint32_t degree = node->end - node->begin;
-      const std::uint32_t* near = neighbors_of(*node);
       std::uint32_t next = v;  // none
       S next_value = best;
       bool tie = false;
-      for (std::uint32_t k = 0; k < degree; ++k) {
-        const S value = dot(nodes_[near[k]].p, dx, dy, dz);
+      for (const std::uint32_t u : neighbors_of(*node)) {
+        const S value = dot(nodes_[u].p, dx, dy, dz);
         if (value > next_value) {
           next_value = value;
-          next = near[k];
+          next = u;
         }
         tie |= value == best;
       }
@@ -455,10 +454,7 @@ class ConvexHullShapeT {
     set[count++] = v;
     std::uint32_t lowest = v;
     for (std::size_t i = 0; i < count; ++i) {
-      const Node& node = nodes_[set[i]];
-      const std::uint32_t* near = neighbors_of(node);
-      for (std::uint32_t k = 0; k < node.end - node.begin; ++k) {
-        const std::uint32_t to = near[k];
+      for (const std::uint32_t to : neighbors_of(nodes_[set[i]])) {
         const S value = dot(nodes_[to].p, dx, dy, dz);
         if (value > best) return std::uint32_t(scan_index(d));
         if (value != best) continue;
