@@ -235,13 +235,15 @@ class ConvexHullShapeT {
   /// True when support climbs (at least kHullClimbMinVertices vertices), false when it scans.
   bool climbs() const { return climbs_; }
 
-  /// The point of support_index(d). When the shape climbs, read from the vertex's record, where
-  /// the climb ended and which is in cache, not from the scan's arrays (three more lines).
+  /// The point of support_index(d), read from the vertex's record, where the climb ended and
+  /// which is in cache, not from the scan's arrays (three more lines).
   Vec3T<S> support_core(const Vec3T<S>& d) const {
-    if (!climbs_) return point(scan_index(d));
-    const Node& node = nodes_[support_index(d)];
-    return {node.p[0], node.p[1], node.p[2]};
+    const S* p = support_position(d);
+    return {p[0], p[1], p[2]};
   }
+  /// support_core(d) as the address of its three coordinates (in the vertex's record), for a
+  /// caller that builds the point in its own registers (PolytopeT).
+  const S* support_position(const Vec3T<S>& d) const { return nodes_[support_index(d)].p; }
   /// The mean of the vertices: inside the hull.
   const Vec3T<S>& core_centre() const { return centre_; }
   S core_radius() const { return S(0); }

@@ -137,7 +137,9 @@ class PolytopeT {
 
   /// Always inlined, as support_index() is: the body of every GJK and EPA iteration.
   [[gnu::always_inline]] inline Vec3T<S> support_core(const Vec3T<S>& d) const {
-    return lazy_hull_ ? lazy_support_core(d) : point(scan_index(d));
+    if (lazy_hull_)
+      if (const S* p = lazy_support_position(d)) return {p[0], p[1], p[2]};
+    return point(scan_index(d));
   }
   /// The mean of the points: inside the hull (any one point may be a vertex, on its boundary).
   const Vec3T<S>& core_centre() const { return centre_; }
@@ -214,11 +216,14 @@ class PolytopeT {
   }
 
   /// support_core() of a polytope that may climb: the hull's point once built (the same
-  /// coordinates, read where the climb ended), else the scan's, counted.
-  [[gnu::noinline]] Vec3T<S> lazy_support_core(const Vec3T<S>& d) const {
-    if (const auto* climb = lazy_hull_->ready()) return climb->hull.support_core(d);
+  /// coordinates, read in the vertex record where the climb ended), else nullptr, counted, and the
+  /// caller scans. A pointer, not the point: a point is returned through memory, and support_core()
+  /// then joined its two paths there, three scalar stores read back as a pair and a scalar, which
+  /// stalled every support call of a small polytope on store forwarding.
+  [[gnu::noinline]] const S* lazy_support_position(const Vec3T<S>& d) const {
+    if (const auto* climb = lazy_hull_->ready()) return climb->hull.support_position(d);
     lazy_hull_->count_towards(kPolytopeHullAfterSupports, [this] { return build_hull(); });
-    return point(scan_index(d));
+    return nullptr;
   }
 
   std::optional<detail::PolytopeHull<S>> build_hull() const {
