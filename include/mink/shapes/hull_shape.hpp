@@ -235,8 +235,8 @@ class ConvexHullShapeT {
   /// True when support climbs (at least kHullClimbMinVertices vertices), false when it scans.
   bool climbs() const { return climbs_; }
 
-  /// The point of support_index(d), read from the vertex's record, where the climb ended and
-  /// which is in cache, not from the scan's arrays (three more lines).
+  /// The point of support_index(d), read from the vertex's record (in cache where a climb ended)
+  /// rather than from the scan's arrays (three more lines).
   Vec3T<S> support_core(const Vec3T<S>& d) const {
     const S* p = support_position(d);
     return {p[0], p[1], p[2]};
