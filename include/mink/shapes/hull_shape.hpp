@@ -243,7 +243,9 @@ class ConvexHullShapeT {
   }
   /// support_core(d) as the address of its three coordinates (in the vertex's record), for a
   /// caller that builds the point in its own registers (PolytopeT).
-  const S* support_position(const Vec3T<S>& d) const { return nodes_[support_index(d)].p; }
+  const S* support_position(const Vec3T<S>& d) const { return vertex_position(support_index(d)); }
+  /// Vertex i's coordinates as support_position() returns them: those of its record.
+  const S* vertex_position(std::size_t i) const { return nodes_[i].p; }
   /// The mean of the vertices: inside the hull.
   const Vec3T<S>& core_centre() const { return centre_; }
   S core_radius() const { return S(0); }

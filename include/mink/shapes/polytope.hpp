@@ -232,11 +232,14 @@ class PolytopeT {
     if (!hull) return std::nullopt;
     detail::PolytopeHull<S> climb{std::move(hull).value(), {}};
     climb.point_of_vertex.resize(climb.hull.size());
-    // support_core() returns the hull's coordinates for the polytope's: they must be the same
-    // numbers (the builder copies its input; a failure here would be its bug: keep scanning).
+    // support_core() returns the coordinates in the hull's vertex records for the polytope's:
+    // they must be the same numbers (the builder copies its input; a failure here would be its
+    // bug: keep scanning).
     for (std::size_t v = 0; v < climb.hull.size(); ++v) {
       climb.point_of_vertex[v] = climb.hull.input_index(v);
-      if (climb.hull.point(v) != point(climb.point_of_vertex[v])) return std::nullopt;
+      const S* position = climb.hull.vertex_position(v);
+      if (Vec3T<S>(position[0], position[1], position[2]) != point(climb.point_of_vertex[v]))
+        return std::nullopt;
     }
     return climb;
   }
