@@ -545,10 +545,12 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
         }
       }
     }
-    if (vw / v_length > out.lower) {
-      out.lower = vw / v_length;
-      out.lower_v = v;
-    }
+    // Selects, not a branch: whether the bound rises depends on the data, and a mispredicted
+    // branch on it waited on the root and the division before the next support call.
+    const S lower_here = vw / v_length;
+    const bool rises = lower_here > out.lower;
+    out.lower = rises ? lower_here : out.lower;
+    out.lower_v = rises ? v : out.lower_v;
     if (v_in_set) {
       // Bounds met: |v| - v.w/|v| <= tol * size, i.e. gap = |v|^2 - v.w <= tol * size * |v|.
       // Relative to the shapes' size, not to the distance: far apart shapes still get their
