@@ -739,7 +739,12 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   }
 
   // 2. Expand the face nearest the origin, until the bracket closes.
-  SupportMinimum<S> least;  // the least support value seen, its direction and support point
+  // The least support value seen, its direction and support point: slots[least_slot]. A step
+  // writes its own into the other slot and keeps the lesser of the two by a select, not a branch:
+  // the support values of EPA's steps rise and fall with no pattern, and a mispredicted branch
+  // waited on the root and the division that give h.
+  SupportMinimum<S> slots[2];
+  int least_slot = 0;
   enum class Step { Expanded, Closed, Stuck, Overflow, ProvenByBall };
   // Cores that hold balls (an ellipsoid, a cylinder): Newton's steps and the balls may close the
   // bracket once EPA's is within kInnerBallHandOff of the size (inner_ball.hpp), for depths within
@@ -755,12 +760,17 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   // unless it already lies on the boundary of A - B.
   auto step = [&](int f) {
     const EpaFace<S>& face = ws.faces[f];
-    const SimplexVertexT<S> w = support(face.n);
+    SupportMinimum<S>& here = slots[least_slot ^ 1];
+    here.vertex = support(face.n);
+    const SimplexVertexT<S>& w = here.vertex;
     const S length = length_of(face.n, face.nn);
     const S h = face.n.dot(w.w) / length;
     if (!(std::abs(h) <= std::numeric_limits<S>::max())) return Step::Overflow;
-    if (h < least.value) least.offer(h, unit_of(face.n, face.nn, length), w);
+    here.value = h;
+    here.normal = unit_of(face.n, face.nn, length);
+    least_slot = h < slots[least_slot].value ? least_slot ^ 1 : least_slot;
     if constexpr (kInnerBallPair<A, B>) {
+      SupportMinimum<S>& least = slots[least_slot];
       // The ball proves depths up to its radius only: deeper (EPA's lower bound beyond it), no
       // try.
       if (try_ball && least.value - face.offset / length <= S(kInnerBallHandOff) * size) {
@@ -793,6 +803,7 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
     out.status = Status::InvalidInput;
     return out;
   }
+  SupportMinimum<S>& least = slots[least_slot];
   if (last == Step::ProvenByBall) {
     out.normal = least.normal;
     out.depth = out.upper = least.value;
