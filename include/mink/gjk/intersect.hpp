@@ -169,15 +169,19 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
       return result;
     }
   }
-  const auto diff = detail::make_core_difference(a, pose_a, b, pose_b);
+  // B's pose in A's frame, whose rotation two small polytopes form only when their first support
+  // values leave them undecided (query/polytope_pair.hpp).
+  detail::CoreDifference<A, B> diff{a, b, {}, pose_a.relative_translation(pose_b), nullptr};
+  bool rotation_formed = false;
   detail::PointAndDirection<S> first;
   const detail::PointAndDirection<S>* first_computed = nullptr;
   if constexpr (detail::kPolytopePair<A, B>) {
-    // Two small polytopes: the first support call's points may prove the overlap
-    // (query/polytope_pair.hpp); else GJK's first phase starts from that support point.
+    // Two small polytopes: the first support call's values may prove the gap, its points the
+    // overlap (query/polytope_pair.hpp); else GJK's first phase starts from that support point.
     if (radius == S(0) && !detail::cache_is_usable(cache)) {
+      rotation_formed = true;
       const detail::EncloseVerdict verdict =
-          detail::first_support_verdict(diff, reach, first);  // radius 0
+          detail::first_support_verdict(diff, pose_a, pose_b, reach, bound_b, first);
       if (verdict != detail::EncloseVerdict::Unsure) {
         result.intersect = verdict == detail::EncloseVerdict::Intersecting;
         result.status = result.intersect ? Status::Intersecting : Status::Separated;
@@ -189,6 +193,7 @@ IntersectResultT<typename A::Scalar> intersect_in_range(
       first_computed = &first;
     }
   }
+  if (!rotation_formed) pose_a.relative_rotation(pose_b, diff.rotation);
   if constexpr (detail::kPointCorePair<A, B>) {
     if (plane.d_sq > S(0)) {
       first = detail::plane_in_difference(plane, diff);

@@ -151,4 +151,65 @@ TEST(PolytopePair, ARotationOffByItsToleranceClaimsNoCommonPoint) {
   EXPECT_NEAR(d.distance, 7.5e-8, 1e-12);
 }
 
+// B's first support value is taken along the world's direction, -R_B^T (t_B - t_A), which is
+// -R^T d only to R_A's error. A's rotation here is a scaling by 1 + 2.5e-7 (within pose_error()'s
+// 1e-6): as GJK sees the pair (B mapped by R_A^T R_B), B's face is 5e-8 inside A's, but the world's
+// direction puts the support values 5e-8 apart. The values may not claim the gap: they must
+// clear it by their slack, and B's corner inside A proves the overlap.
+TEST(PolytopePair, TheValuesClaimNoGapWithinTheirSlack) {
+  const auto a = mink::Polytope::make(cube_corners(1));
+  const auto b = mink::Polytope::make(cube_corners(0.2));
+  ASSERT_TRUE(a && b && a->build_face_planes() && b->build_face_planes());
+  const double s = 1 + 2.5e-7;
+  Pose pa;
+  pa.rotation = s * mink::Mat3::Identity();
+  ASSERT_EQ(mink::pose_error(pa), nullptr);
+  const Pose pb = Pose::from(Vec3(0.2 + (1 - 5e-8) / s, 0, 0), mink::Quat::Identity());
+  const auto got = mink::intersect(*a, pa, *b, pb);
+  EXPECT_EQ(got.status, mink::Status::Intersecting);
+  EXPECT_TRUE(got.intersect);
+  const auto d = mink::distance(*a, pa, *b, pb);
+  EXPECT_TRUE(d.intersect);
+}
+
+// Apart by 1e-7, less than the values' slack (4e-6 of B's bounding radius) but more than the
+// touching tolerance: the support points decide, B's taken again along -R^T d itself.
+TEST(PolytopePair, APairApartWithinTheSlackIsToldByItsPoints) {
+  const auto a = mink::Polytope::make(cube_corners(1));
+  const auto b = mink::Polytope::make(cube_corners(0.2));
+  ASSERT_TRUE(a && b && a->build_face_planes() && b->build_face_planes());
+  const Pose pb = Pose::from(Vec3(1.2 + 1e-7, 0, 0), mink::Quat::Identity());
+  const auto got = mink::intersect(*a, Pose::identity(), *b, pb);
+  EXPECT_EQ(got.status, mink::Status::Separated);
+  EXPECT_EQ(got.iterations, 1);
+  const auto d = mink::distance(*a, Pose::identity(), *b, pb);
+  EXPECT_NEAR(d.distance, 1e-7, 1e-15);
+}
+
+// Origins in the same place: the first direction is A's +x, and B's is that axis turned by both
+// rotations. Each polytope lies off its origin: A below x = -2 in its frame, B above x = 1, so
+// +x separates them by 3; a copy of A in A's place overlaps it along that axis.
+TEST(PolytopePair, CoincidentOriginsTakeAsXAxis) {
+  std::vector<Vec3> below, above;
+  for (const Vec3& c : cube_corners(0.5)) {
+    below.push_back(c + Vec3(-2.5, 0, 0));
+    above.push_back(c + Vec3(1.5, 0, 0));
+  }
+  const auto a = mink::Polytope::make(below);
+  const auto b = mink::Polytope::make(above);
+  const auto a_copy = mink::Polytope::make(below);
+  ASSERT_TRUE(a && b && a_copy);
+  ASSERT_TRUE(a->build_face_planes() && b->build_face_planes() && a_copy->build_face_planes());
+  oracle::Rng rng(9917);
+  for (int i = 0; i < 50; ++i) {
+    const Vec3 origin(rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-10, 10));
+    const Pose pa = Pose::from(origin, rng.rotation());
+    const auto apart = mink::intersect(*a, pa, *b, pa);
+    EXPECT_EQ(apart.status, mink::Status::Separated);
+    EXPECT_EQ(apart.iterations, 1);
+    EXPECT_NEAR(mink::distance(*a, pa, *b, pa).distance, 3, 1e-12);
+    EXPECT_TRUE(mink::intersect(*a, pa, *a_copy, pa).intersect);
+  }
+}
+
 }  // namespace
