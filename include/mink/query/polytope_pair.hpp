@@ -115,10 +115,9 @@ template <ConvexShape A, ConvexShape B>
   first.w = on_a - on_b;  // as CoreDifference::support_point() computes it
   S wd = first.w.dot(d);
   if (!(wd >= S(0))) [[unlikely]] {
-    // Apart by less than the values' slack, or not finite: B's point along -R^T d itself, as GJK
-    // takes it, so that this verdict is GJK's.
-    const std::size_t exact = polytope_b.support_core_hit(diff.direction_in_b(d)).index();
-    on_b = diff.rotation * polytope_b.point(exact) + diff.translation;
+    // Apart by less than the values' slack, or not finite: B's point along -R^T d itself, as
+    // CoreDifference::support_point() takes it, so that this verdict is GJK's.
+    on_b = diff.rotation * polytope_b.support_core(diff.direction_in_b(d)) + diff.translation;
     first.w = on_a - on_b;
     wd = first.w.dot(d);
     if (!(wd >= S(0)))
