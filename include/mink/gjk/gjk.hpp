@@ -500,7 +500,9 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
       out.status = Status::IterationLimit;
       break;
     }
-    SimplexVertexT<S> vertex;
+    // Written past the simplex's end, where the step below keeps it if it makes progress: no copy
+    // of the vertex's four vectors per iteration. simplex.size < 4 here (4 exits above).
+    SimplexVertexT<S>& vertex = simplex.vertices[simplex.size];
     diff.support(-v, vertex);
     ++out.iterations;
     const S vw = v.dot(vertex.w);
@@ -568,9 +570,8 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
         break;
       }
     }
-    // Store w past the end and find the closest point with it; `simplex` changes only once the
-    // step makes progress (then in place, which moves only the vertices whose place changes).
-    simplex.vertices[simplex.size] = vertex;
+    // The closest point with w, which lies past the end; `simplex` changes only once the step
+    // makes progress (then in place, which moves only the vertices whose place changes).
     const KeptVertices<S> kept = closest_vertices(simplex, simplex.size + 1);
     const Vec3T<S> next = kept.v;
     const S next_sq = next.squaredNorm();
@@ -589,17 +590,18 @@ GjkOutcome<typename A::Scalar> run_gjk_distance(const CoreDifference<A, B>& diff
       // newest support point of A with every support point of B in the simplex (and the other
       // way round). One of those simplices holds the closest point without the sag. If neither
       // gets closer, this is the rounding floor and the previous simplex is the answer.
+      const SimplexVertexT<S> newest = vertex;  // the trial buffer may become the simplex
       Vec3T<S> best_v = v;
       S best_sq = v_sq;
       for (int side = 0; side < 2; ++side) {
         SimplexT<S>& trial = buffers[current ^ 1];
         trial.size = 0;
         for (int k = 0; k <= simplex.size; ++k) {
-          SimplexVertexT<S> mixed = k < simplex.size ? simplex.vertices[k] : vertex;
+          SimplexVertexT<S> mixed = k < simplex.size ? simplex.vertices[k] : newest;
           if (side == 0)
-            mixed.a = vertex.a;
+            mixed.a = newest.a;
           else
-            mixed.b = vertex.b;
+            mixed.b = newest.b;
           mixed.w = mixed.a - mixed.b;
           if (trial.size < 4) trial.append_unless_held(mixed);
         }

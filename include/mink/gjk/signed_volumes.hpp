@@ -295,8 +295,10 @@ SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
   const bool flat =
       !(det * det > kFlatness<S> * e1.squaredNorm() * e2.squaredNorm() * e3.squaredNorm());
   if (!flat) {
-    bool inside = true;
-    for (int i = 0; i < 4; ++i) inside = inside && same_sign_or_zero(c[i], det);
+    // beyond[i]: the origin lies beyond face i (its volume has the other sign).
+    bool beyond[4];
+    for (int i = 0; i < 4; ++i) beyond[i] = !same_sign_or_zero(c[i], det);
+    const bool inside = !(beyond[0] | beyond[1] | beyond[2] | beyond[3]);
     const S sum = c[0] + c[1] + c[2] + c[3];
     if (inside && sum != S(0)) {
       best.v = Vec3T<S>::Zero();
@@ -313,11 +315,9 @@ SubSimplex<S> closest_on_tetrahedron(const Vec3T<S>* w) {
     // offered first. On GJK's tetrahedra of 8-point polytopes apart, index order offered 1.8
     // faces a tetrahedron; this order 1.2, the first one the answer in 85 % of them (the rest
     // are answered by an edge).
-    bool beyond[4];
     int first = -1;
     S best_c_sq = S(0), best_nn = S(1);
     for (int i = 0; i < 4; ++i) {
-      beyond[i] = !same_sign_or_zero(c[i], det);
       if (!beyond[i]) continue;
       // The plane's distance is |c_i| / |n_i| up to a common factor, compared squared and by
       // cross products: no root or division on the way to the face. An overflow or underflow
