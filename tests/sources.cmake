@@ -20,6 +20,7 @@ set(MINK_TEST_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/boolean_phase_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/polytope_pair_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/framed_points_test.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/signed_volumes_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/curved_separation_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/curved_beside_feature_test.cpp
   ${CMAKE_CURRENT_LIST_DIR}/unit/gjk/flat_pair_test.cpp
