@@ -37,12 +37,14 @@ struct CoreSegment {
 };
 
 /// SegmentCore<T>::world(shape, pose, origin) gives T's core as a CoreSegment in the world frame
-/// shifted to `origin`. Only for shapes whose core is a point or a segment.
+/// shifted to `origin`. Only for shapes whose core is a point or a segment. `kCentred`: the core's
+/// centre is the pose's origin (spheres, capsules), so about that origin it is exactly 0.
 template <class T>
 struct SegmentCore : std::false_type {};
 
 template <class S>
 struct SegmentCore<SphereT<S>> : std::true_type {
+  static constexpr bool kCentred = true;
   static CoreSegment<S> world(const SphereT<S>&, const PoseT<S>& pose, const Vec3T<S>& origin) {
     return {pose.translation - origin, Vec3T<S>::Zero()};
   }
@@ -50,6 +52,7 @@ struct SegmentCore<SphereT<S>> : std::true_type {
 
 template <class S>
 struct SegmentCore<CapsuleT<S>> : std::true_type {
+  static constexpr bool kCentred = true;
   static CoreSegment<S> world(const CapsuleT<S>& c, const PoseT<S>& pose, const Vec3T<S>& origin) {
     // The core is (0, 0, +-h): the rotation's z column scaled, no matrix product needed.
     return {pose.translation - origin, pose.rotation.col(2) * c.half_height};
@@ -58,6 +61,7 @@ struct SegmentCore<CapsuleT<S>> : std::true_type {
 
 template <class S>
 struct SegmentCore<PointT<S>> : std::true_type {
+  static constexpr bool kCentred = false;
   static CoreSegment<S> world(const PointT<S>& point, const PoseT<S>& pose,
                               const Vec3T<S>& origin) {
     return {pose.rotation * point.position + (pose.translation - origin), Vec3T<S>::Zero()};
@@ -66,6 +70,7 @@ struct SegmentCore<PointT<S>> : std::true_type {
 
 template <class S>
 struct SegmentCore<SegmentT<S>> : std::true_type {
+  static constexpr bool kCentred = false;
   static CoreSegment<S> world(const SegmentT<S>& s, const PoseT<S>& pose, const Vec3T<S>& origin) {
     return {pose.rotation * (S(0.5) * (s.a + s.b)) + (pose.translation - origin),
             pose.rotation * (S(0.5) * (s.b - s.a))};
@@ -75,6 +80,7 @@ struct SegmentCore<SegmentT<S>> : std::true_type {
 template <class T>
 struct SegmentCore<Rounded<T>> : std::bool_constant<SegmentCore<T>::value> {
   using S = typename T::Scalar;
+  static constexpr bool kCentred = SegmentCore<T>::kCentred;
   static CoreSegment<S> world(const Rounded<T>& r, const PoseT<S>& pose, const Vec3T<S>& origin) {
     return SegmentCore<T>::world(r.shape, pose, origin);
   }
@@ -266,22 +272,29 @@ template <class S>
   return apart > S(0) && bound >= std::numeric_limits<S>::min() && apart * apart > bound;
 }
 
-/// The closest points of the cores of a (at pose_a) and b (at pose_b), both points or segments,
-/// in the world frame shifted to A's origin (which keeps far-away pairs precise), and their
-/// distance: returns |on_b - on_a|; `unit` (optional)
-/// receives the direction from on_a to on_b when they differ (else it is left as it was): the
-/// plain quotient while the gap is more than 1e-3 of the segments' size and distance from A's
-/// origin (its rounding then tilts it by less than 3e-13 rad), segment_gap_direction()'s when the
-/// cores nearly meet. Always inlined under Clang (segment_parameters() returns u and v by value
-/// for the same reason): out of line, Clang passed its outputs and the parameters through memory
-/// (a capsule pair's distance 31.6 -> 27.7 ns in a driver, both changes together). GCC kept them
-/// in registers out of line and ran 6 % slower inlined (27.6 -> 29.4 ns), so it decides itself.
+/// What closest_core_points() finds: the cores' closest points, the unit direction from on_a to
+/// on_b and their distance.
+template <class S>
+struct CorePoints {
+  Vec3T<S> on_a, on_b, unit;
+  S length;
+};
+
+/// closest_core_points() for every pair, out of line: the pairs its common path turns away
+/// (lengths beyond the range of segment_parameters(), cores that nearly meet or coincide). The
+/// answer comes back by value: outputs passed by reference to a call, even a cold one, kept the
+/// caller's points in memory on the common path as well. `unit` is `unit_default` when the
+/// points coincide or `want_unit` is false.
 template <class A, class B>
-MINK_SEGMENT_CORES_INLINE typename A::Scalar closest_core_points(
+[[gnu::noinline, gnu::cold]] CorePoints<typename A::Scalar> closest_core_points_general(
     const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
-    const PoseT<typename A::Scalar>& pose_b, Vec3T<typename A::Scalar>& on_a,
-    Vec3T<typename A::Scalar>& on_b, Vec3T<typename A::Scalar>* unit = nullptr) {
+    const PoseT<typename A::Scalar>& pose_b, const Vec3T<typename A::Scalar>& unit_default,
+    bool want_unit) {
   using S = typename A::Scalar;
+  CorePoints<S> out;
+  out.unit = unit_default;
+  Vec3T<S>&on_a = out.on_a, &on_b = out.on_b;
+  Vec3T<S>* unit = want_unit ? &out.unit : nullptr;
   const CoreSegment<S> p = SegmentCore<A>::world(a, pose_a, pose_a.translation);
   const CoreSegment<S> q = SegmentCore<B>::world(b, pose_b, pose_a.translation);
   S u = S(0), v = S(0);
@@ -303,6 +316,84 @@ MINK_SEGMENT_CORES_INLINE typename A::Scalar closest_core_points(
     else
       *unit = segment_gap_direction(p, q, u, v, gap, terms_sq);
   }
+  out.length = length;
+  return out;
+}
+
+/// closest_core_points_general()'s answer into closest_core_points()'s outputs. A function, not
+/// a lambda: Clang left the lambda out of line, and its captures kept the outputs in memory.
+template <class A, class B>
+[[gnu::always_inline]] inline typename A::Scalar from_general(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b, Vec3T<typename A::Scalar>& on_a,
+    Vec3T<typename A::Scalar>& on_b, Vec3T<typename A::Scalar>* unit) {
+  using S = typename A::Scalar;
+  const CorePoints<S> r = closest_core_points_general(
+      a, pose_a, b, pose_b, unit ? *unit : Vec3T<S>(Vec3T<S>::Zero()), unit != nullptr);
+  on_a = r.on_a;
+  on_b = r.on_b;
+  if (unit) *unit = r.unit;
+  return r.length;
+}
+
+/// The closest points of the cores of a (at pose_a) and b (at pose_b), both points or segments,
+/// in the world frame shifted to A's origin (which keeps far-away pairs precise), and their
+/// distance: returns |on_b - on_a|; `unit` (optional) receives the direction from on_a to on_b
+/// when they differ (else it is left as it was): the plain quotient while the gap is more than
+/// 1e-3 of the segments' size and distance from A's origin (its rounding then tilts it by less
+/// than 3e-13 rad), segment_gap_direction()'s when the cores nearly meet.
+///
+/// The common path (lengths in segment_parameters()'s range, cores apart by more than 1e-3 of
+/// their terms) is inlined, with A's centre a constant 0 when the core is centred on its pose
+/// (kCentred); every other pair goes to closest_core_points_general(), which gives the same
+/// bits on the common path. Capsule pairs' distance 10 % faster in a driver than the general path
+/// inlined, of which half was the centre 0 computed and added, the rest outputs kept in memory.
+/// Always inlined under Clang (segment_parameters() returns u and v by value for the same reason):
+/// out of line, Clang passed its outputs and the parameters through memory. GCC kept them in
+/// registers out of line and ran 6 % slower inlined, so it decides itself.
+template <class A, class B>
+MINK_SEGMENT_CORES_INLINE typename A::Scalar closest_core_points(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b, Vec3T<typename A::Scalar>& on_a,
+    Vec3T<typename A::Scalar>& on_b, Vec3T<typename A::Scalar>* unit = nullptr) {
+  using S = typename A::Scalar;
+  constexpr bool kCentredA = SegmentCore<A>::kCentred;
+  const CoreSegment<S> q = SegmentCore<B>::world(b, pose_b, pose_a.translation);
+  CoreSegment<S> p;
+  if constexpr (kCentredA)
+    p.half = SegmentCore<A>::world(a, pose_a, pose_a.translation).half;
+  else
+    p = SegmentCore<A>::world(a, pose_a, pose_a.translation);
+  const Vec3T<S>&hp = p.half, &hq = q.half;
+  Vec3T<S> w;
+  if constexpr (kCentredA)
+    w = q.centre;
+  else
+    w = q.centre - p.centre;
+  const S a_sq = hp.squaredNorm(), e_sq = hq.squaredNorm(), w_sq = w.squaredNorm();
+  // closest_points_of_segments()'s range test.
+  if ((a_sq < kTinySegmentSq<S> && hp != Vec3T<S>::Zero()) ||
+      (e_sq < kTinySegmentSq<S> && hq != Vec3T<S>::Zero()) ||
+      !(std::max(std::max(a_sq, e_sq), w_sq) <= kHugeSegmentSq<S>)) [[unlikely]]
+    return from_general(a, pose_a, b, pose_b, on_a, on_b, unit);
+  const SegmentParameters<S> t = segment_parameters(hp, hq, w, a_sq, e_sq);
+  // The sums of closest_points_of_segments() and of the general path's terms_sq.
+  S terms_sq;
+  if constexpr (kCentredA) {
+    on_a = t.u * hp;
+    terms_sq = a_sq + w_sq + e_sq;
+  } else {
+    on_a = p.centre + t.u * hp;
+    terms_sq = p.centre.squaredNorm() + a_sq + q.centre.squaredNorm() + e_sq;
+  }
+  on_b = q.centre + t.v * hq;
+  const Vec3T<S> gap = on_b - on_a;
+  const S gap_sq = gap.squaredNorm();
+  if (!(gap_sq >= std::numeric_limits<S>::min() && gap_sq <= std::numeric_limits<S>::max() &&
+        gap_sq >= S(1e-6) * terms_sq)) [[unlikely]]
+    return from_general(a, pose_a, b, pose_b, on_a, on_b, unit);
+  const S length = std::sqrt(gap_sq);
+  if (unit) *unit = gap * (S(1) / length);
   return length;
 }
 
