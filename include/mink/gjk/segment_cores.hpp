@@ -346,8 +346,9 @@ template <class A, class B>
 /// The common path (lengths in segment_parameters()'s range, cores apart by more than 1e-3 of
 /// their terms) is inlined, with A's centre a constant 0 when the core is centred on its pose
 /// (kCentred); every other pair goes to closest_core_points_general(), which gives the same
-/// bits on the common path. Capsule pairs' distance 10 % faster in a driver than the general path
-/// inlined, of which half was the centre 0 computed and added, the rest outputs kept in memory.
+/// numbers on the common path (its centre is +0; a zero coordinate may differ in sign). Capsule
+/// pairs' distance 10 % faster in a driver than the general path inlined, of which half was the
+/// centre 0 computed and added, the rest outputs kept in memory.
 /// Always inlined under Clang (segment_parameters() returns u and v by value for the same reason):
 /// out of line, Clang passed its outputs and the parameters through memory. GCC kept them in
 /// registers out of line and ran 6 % slower inlined, so it decides itself.
