@@ -141,6 +141,18 @@ inline constexpr S kTinySegmentSq = power_of_two<S>(std::numeric_limits<S>::min_
 template <class S>
 inline constexpr S kHugeSegmentSq = power_of_two<S>(std::numeric_limits<S>::max_exponent / 2 - 4);
 
+/// Whether segment_parameters() must run rescaled for half vectors hp, hq (squared lengths a_sq,
+/// e_sq) and centres w_sq apart, squared: a segment shorter than kTinySegmentSq but not a point,
+/// or a length beyond kHugeSegmentSq. closest_points_of_segments() and closest_core_points()
+/// share it.
+template <class S>
+[[gnu::always_inline]] inline bool segments_out_of_range(const Vec3T<S>& hp, const Vec3T<S>& hq,
+                                                         S a_sq, S e_sq, S w_sq) {
+  return (a_sq < kTinySegmentSq<S> && hp != Vec3T<S>::Zero()) ||
+         (e_sq < kTinySegmentSq<S> && hq != Vec3T<S>::Zero()) ||
+         !(std::max(std::max(a_sq, e_sq), w_sq) <= kHugeSegmentSq<S>);
+}
+
 /// segment_parameters() on the pair scaled to its largest coordinate, for segments whose squared
 /// lengths underflow or overflow (see closest_points_of_segments()); out of line, as it is rare.
 template <class S>
@@ -183,13 +195,10 @@ template <class S>
   // products of those lose digits or underflow, and a segment of 1e-170 would count as a point.
   // u and v do not change with the scale, so such a pair is solved rescaled, as is one whose
   // lengths or offset are so large that products of four of them overflow (kHugeSegmentSq).
-  constexpr S kTinySq = kTinySegmentSq<S>;
   const S a = hp.squaredNorm(), e = hq.squaredNorm();
-  const SegmentParameters<S> t =
-      (a < kTinySq && hp != Vec3T<S>::Zero()) || (e < kTinySq && hq != Vec3T<S>::Zero()) ||
-              !(std::max(std::max(a, e), w.squaredNorm()) <= kHugeSegmentSq<S>)
-          ? segment_parameters_rescaled(hp, hq, w)
-          : segment_parameters(hp, hq, w, a, e);
+  const SegmentParameters<S> t = segments_out_of_range(hp, hq, a, e, w.squaredNorm())
+                                     ? segment_parameters_rescaled(hp, hq, w)
+                                     : segment_parameters(hp, hq, w, a, e);
   closest_p = p.centre + t.u * hp;
   closest_q = q.centre + t.v * hq;
   if (u_out) *u_out = t.u;
@@ -372,10 +381,7 @@ MINK_SEGMENT_CORES_INLINE typename A::Scalar closest_core_points(
   else
     w = q.centre - p.centre;
   const S a_sq = hp.squaredNorm(), e_sq = hq.squaredNorm(), w_sq = w.squaredNorm();
-  // closest_points_of_segments()'s range test.
-  if ((a_sq < kTinySegmentSq<S> && hp != Vec3T<S>::Zero()) ||
-      (e_sq < kTinySegmentSq<S> && hq != Vec3T<S>::Zero()) ||
-      !(std::max(std::max(a_sq, e_sq), w_sq) <= kHugeSegmentSq<S>)) [[unlikely]]
+  if (segments_out_of_range(hp, hq, a_sq, e_sq, w_sq)) [[unlikely]]
     return from_general(a, pose_a, b, pose_b, on_a, on_b, unit);
   const SegmentParameters<S> t = segment_parameters(hp, hq, w, a_sq, e_sq);
   // The sums of closest_points_of_segments() and of the general path's terms_sq.
