@@ -1,8 +1,11 @@
 // lengths_of() (two lengths with one packed square root) against length_of() one at a time, to
 // the last bit, at every magnitude a length can have: 0, subnormal, the ranges where the square
-// underflows or overflows, and ordinary ones; and box_bounding_radii() against bounding_radius().
+// underflows or overflows, and ordinary ones; box_bounding_radii() against bounding_radius(); and
+// unit_of() against the quotient in long double at those magnitudes, on both sides of the bounds
+// of unit_beside_root()'s range.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -39,6 +42,56 @@ TEST(Lengths, TwoAtOnceEqualOneAtATimeDouble) {
 }
 TEST(Lengths, TwoAtOnceEqualOneAtATimeFloat) {
   check_lengths<float>();
+}
+
+/// unit_of(v) against v / |v| in long double (v scaled by its largest coordinate first, so that
+/// nothing overflows or underflows there): every coordinate within 4 eps.
+template <class S>
+void check_unit_of(const Vec3T<S>& v) {
+  const Vec3T<S> unit = unit_of(v);
+  const long double largest = std::max(
+      {std::abs((long double)v.x()), std::abs((long double)v.y()), std::abs((long double)v.z())});
+  const long double x = v.x() / largest, y = v.y() / largest, z = v.z() / largest;
+  const long double norm = std::sqrt(x * x + y * y + z * z);
+  const long double expected[3] = {x / norm, y / norm, z / norm};
+  for (int k = 0; k < 3; ++k)
+    EXPECT_LE(std::abs(unit[k] - expected[k]), 4 * std::numeric_limits<S>::epsilon())
+        << v.transpose();
+}
+
+template <class S>
+void check_unit_of_at_every_magnitude() {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<S> unit(S(-1), S(1));
+  std::uniform_int_distribution<int> exponent(std::numeric_limits<S>::min_exponent - 30,
+                                              std::numeric_limits<S>::max_exponent - 2);
+  for (int trial = 0; trial < 20000; ++trial) {
+    Vec3T<S> v;
+    for (int i = 0; i < 3; ++i)
+      v[i] = rng() % 5 == 0 ? S(0) : std::ldexp(unit(rng), exponent(rng) / (1 + int(rng() % 3)));
+    if (v.isZero()) continue;
+    check_unit_of(v);
+  }
+  // Squares at and around the bounds of the reciprocal's range (2^-1022 and 2^1022 in double),
+  // and of the normal range.
+  const int bounds[] = {std::numeric_limits<S>::min_exponent - 1,
+                        1 - std::numeric_limits<S>::min_exponent,
+                        std::numeric_limits<S>::max_exponent};
+  for (const int bound : bounds) {
+    for (int step = -3; step <= 3; ++step) {
+      const S x = std::ldexp(S(1), (bound + step) / 2);
+      check_unit_of(Vec3T<S>(x, S(0), S(0)));
+      check_unit_of(Vec3T<S>(x, x, x));
+      check_unit_of(Vec3T<S>(x, S(0.75) * x, -S(0.5) * x));
+    }
+  }
+}
+
+TEST(Lengths, UnitOfAtEveryMagnitudeDouble) {
+  check_unit_of_at_every_magnitude<double>();
+}
+TEST(Lengths, UnitOfAtEveryMagnitudeFloat) {
+  check_unit_of_at_every_magnitude<float>();
 }
 
 TEST(Lengths, BoxBoundingRadiiEqualBoundingRadius) {
