@@ -121,11 +121,12 @@ template <class S>
 }
 
 /// v / |v| from v_sq = v.squaredNorm() and length = sqrt(v_sq), where reciprocal_in_range(v_sq):
-/// v (length / v_sq), whose division waits on v_sq only and so runs beside the root, where
-/// v (1 / length) waits for the root first (capsule distance 5 % faster). Within 2 ulps of unit.
+/// (v / v_sq) length, whose division waits on v_sq only and so runs beside the root, where
+/// v (1 / length) waits for the root first; the root is the last factor, as it comes last
+/// (capsule distance 5 % faster). Within 2 ulps of unit.
 template <class S>
 [[gnu::always_inline]] inline Vec3T<S> unit_beside_root(const Vec3T<S>& v, S v_sq, S length) {
-  return v * (length * (S(1) / v_sq));
+  return Vec3T<S>(v * (S(1) / v_sq)) * length;
 }
 
 /// v / |v| for v != 0, given v_sq = v.squaredNorm() and length = length_of(v, v_sq): by
