@@ -36,6 +36,8 @@
 /// Cost: no allocation, no global state, reentrant.
 #pragma once
 
+#include <optional>
+
 #include "mink/epa/epa.hpp"
 #include "mink/gjk/gjk.hpp"
 #include "mink/gjk/segment_cores.hpp"
@@ -119,21 +121,24 @@ DistanceResultT<typename A::Scalar> distance_in_range(
   if constexpr (detail::kSegmentCores<A, B>) {
     // Spheres, capsules, points, segments: closed form, no iteration. Computed in the world frame
     // shifted to A's origin, like GJK, so far-away pairs keep their precision.
+    // Cores within reach are decided on the square of their gap, as intersect() decides them,
+    // before the root and the direction, which are not reported there.
     Vec3T<S> on_a, on_b, normal = Vec3T<S>::UnitZ();
-    const S core_distance = detail::closest_core_points(a, pose_a, b, pose_b, on_a, on_b, &normal);
     const S radius_a = a.core_radius(), radius_b = b.core_radius();
-    if (!(core_distance <= std::numeric_limits<S>::max())) {
-      result.error = detail::kOverflowError;
-      return result;
-    }
     const S touch = tolerances.relative * (a.bounding_radius() + b.bounding_radius());
-    if (core_distance <= radius_a + radius_b + touch) {
+    const std::optional<S> core_distance = detail::closest_core_points_beyond(
+        a, pose_a, b, pose_b, radius_a + radius_b + touch, on_a, on_b, &normal);
+    if (!core_distance) {
       result.status = Status::Intersecting;
       result.intersect = true;
       return result;
     }
+    if (!(*core_distance <= std::numeric_limits<S>::max())) {
+      result.error = detail::kOverflowError;
+      return result;
+    }
     // on_a, on_b are world points shifted to A's origin: shift them back.
-    detail::separated_from_cores(on_a, on_b, normal, core_distance, radius_a, radius_b, result,
+    detail::separated_from_cores(on_a, on_b, normal, *core_distance, radius_a, radius_b, result,
                                  &pose_a.translation);
     return result;
   }

@@ -348,6 +348,19 @@ template <class A, class B>
   return r.length;
 }
 
+/// from_general(), and for closest_core_points_until<true>() nothing where the cores are within
+/// `reach` (on the root: these pairs are rare).
+template <bool kStopWithinReach, class A, class B>
+[[gnu::always_inline]] inline std::optional<typename A::Scalar> from_general_until(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b, typename A::Scalar reach,
+    Vec3T<typename A::Scalar>& on_a, Vec3T<typename A::Scalar>& on_b,
+    Vec3T<typename A::Scalar>* unit) {
+  const typename A::Scalar length = from_general(a, pose_a, b, pose_b, on_a, on_b, unit);
+  if (kStopWithinReach && length <= reach) return std::nullopt;
+  return length;
+}
+
 /// The closest points of the cores of a (at pose_a) and b (at pose_b), both points or segments,
 /// in the world frame shifted to A's origin (which keeps far-away pairs precise), and their
 /// distance: returns |on_b - on_a|; `unit` (optional) receives the direction from on_a to on_b
@@ -364,11 +377,17 @@ template <class A, class B>
 /// Always inlined under Clang (segment_parameters() returns u and v by value for the same reason):
 /// out of line, Clang passed its outputs and the parameters through memory. GCC kept them in
 /// registers out of line and ran 6 % slower inlined, so it decides itself.
-template <class A, class B>
-MINK_SEGMENT_CORES_INLINE typename A::Scalar closest_core_points(
+///
+/// With kStopWithinReach, nothing (std::nullopt) where the cores are within `reach` of each other,
+/// decided as intersect() decides it (length_at_most() on the gap, before the root): distance()
+/// reports no points or direction there, and the root and the unit direction, the last links of
+/// the query's chain of dependent operations, are not taken (closest_core_points_beyond()).
+template <bool kStopWithinReach, class A, class B>
+MINK_SEGMENT_CORES_INLINE std::optional<typename A::Scalar> closest_core_points_until(
     const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
-    const PoseT<typename A::Scalar>& pose_b, Vec3T<typename A::Scalar>& on_a,
-    Vec3T<typename A::Scalar>& on_b, Vec3T<typename A::Scalar>* unit = nullptr) {
+    const PoseT<typename A::Scalar>& pose_b, typename A::Scalar reach,
+    Vec3T<typename A::Scalar>& on_a, Vec3T<typename A::Scalar>& on_b,
+    Vec3T<typename A::Scalar>* unit) {
   using S = typename A::Scalar;
   constexpr bool kCentredA = SegmentCore<A>::kCentred;
   const CoreSegment<S> q = SegmentCore<B>::world(b, pose_b, pose_a.translation);
@@ -385,7 +404,7 @@ MINK_SEGMENT_CORES_INLINE typename A::Scalar closest_core_points(
     w = q.centre - p.centre;
   const S a_sq = hp.squaredNorm(), e_sq = hq.squaredNorm(), w_sq = w.squaredNorm();
   if (segments_out_of_range(hp, hq, a_sq, e_sq, w_sq)) [[unlikely]]
-    return from_general(a, pose_a, b, pose_b, on_a, on_b, unit);
+    return from_general_until<kStopWithinReach>(a, pose_a, b, pose_b, reach, on_a, on_b, unit);
   const SegmentParameters<S> t = segment_parameters(hp, hq, w, a_sq, e_sq);
   // The sums of closest_points_of_segments() and of the general path's terms_sq.
   S terms_sq;
@@ -399,11 +418,45 @@ MINK_SEGMENT_CORES_INLINE typename A::Scalar closest_core_points(
   on_b = q.centre + t.v * hq;
   const Vec3T<S> gap = on_b - on_a;
   const S gap_sq = gap.squaredNorm();
+  // Before the routing: the general path gives the same gap. While the reach's square lies well
+  // inside the normal range, comparing squares is length_at_most() exactly, whatever gap_sq is
+  // (a gap whose square underflows is shorter than the reach, one whose square overflows longer),
+  // and the range test waits on the reach alone, not on the chain to the gap (length_at_most()
+  // there: capsule distance apart 4 % slower).
+  if constexpr (kStopWithinReach) {
+    const S reach_sq = reach * reach;
+    constexpr S kSmallest = std::numeric_limits<S>::min(), kLargest = std::numeric_limits<S>::max();
+    if (reach_sq >= S(4) * kSmallest && reach_sq <= kLargest / S(4)
+            ? gap_sq <= reach_sq
+            : length_at_most(gap, gap_sq, reach))
+      return std::nullopt;
+  }
   if (!(reciprocal_in_range(gap_sq) && gap_sq >= S(1e-6) * terms_sq)) [[unlikely]]
-    return from_general(a, pose_a, b, pose_b, on_a, on_b, unit);
+    return from_general_until<kStopWithinReach>(a, pose_a, b, pose_b, reach, on_a, on_b, unit);
   const S length = std::sqrt(gap_sq);
   if (unit) *unit = unit_beside_root(gap, gap_sq, length);
   return length;
+}
+
+/// See closest_core_points_until().
+template <class A, class B>
+MINK_SEGMENT_CORES_INLINE typename A::Scalar closest_core_points(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b, Vec3T<typename A::Scalar>& on_a,
+    Vec3T<typename A::Scalar>& on_b, Vec3T<typename A::Scalar>* unit = nullptr) {
+  return *closest_core_points_until<false>(a, pose_a, b, pose_b, typename A::Scalar(0), on_a, on_b,
+                                           unit);
+}
+
+/// closest_core_points() where the cores are farther apart than `reach`, else nothing (see
+/// closest_core_points_until()).
+template <class A, class B>
+MINK_SEGMENT_CORES_INLINE std::optional<typename A::Scalar> closest_core_points_beyond(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b, typename A::Scalar reach,
+    Vec3T<typename A::Scalar>& on_a, Vec3T<typename A::Scalar>& on_b,
+    Vec3T<typename A::Scalar>* unit) {
+  return closest_core_points_until<true>(a, pose_a, b, pose_b, reach, on_a, on_b, unit);
 }
 
 }  // namespace mink::detail
