@@ -15,19 +15,30 @@
 namespace mink::detail {
 namespace {
 
+/// Vectors whose coordinates have mixed magnitudes, from subnormal to near the largest, some
+/// exactly 0.
 template <class S>
-void check_lengths() {
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<S> unit(S(-1), S(1));
-  std::uniform_int_distribution<int> exponent(std::numeric_limits<S>::min_exponent - 30,
-                                              std::numeric_limits<S>::max_exponent - 2);
-  auto vector = [&] {
-    // Coordinates of mixed magnitudes, some exactly 0.
+class MixedVectors {
+ public:
+  explicit MixedVectors(unsigned seed) : rng_(seed) {}
+  Vec3T<S> operator()() {
     Vec3T<S> v;
     for (int i = 0; i < 3; ++i)
-      v[i] = rng() % 5 == 0 ? S(0) : std::ldexp(unit(rng), exponent(rng) / (1 + int(rng() % 3)));
+      v[i] =
+          rng_() % 5 == 0 ? S(0) : std::ldexp(unit_(rng_), exponent_(rng_) / (1 + int(rng_() % 3)));
     return v;
-  };
+  }
+
+ private:
+  std::mt19937_64 rng_;
+  std::uniform_real_distribution<S> unit_{S(-1), S(1)};
+  std::uniform_int_distribution<int> exponent_{std::numeric_limits<S>::min_exponent - 30,
+                                               std::numeric_limits<S>::max_exponent - 2};
+};
+
+template <class S>
+void check_lengths() {
+  MixedVectors<S> vector(11);
   for (int trial = 0; trial < 20000; ++trial) {
     const Vec3T<S> u = vector(), v = vector();
     S lu = S(-1), lv = S(-1);
@@ -61,14 +72,9 @@ void check_unit_of(const Vec3T<S>& v) {
 
 template <class S>
 void check_unit_of_at_every_magnitude() {
-  std::mt19937_64 rng(12);
-  std::uniform_real_distribution<S> unit(S(-1), S(1));
-  std::uniform_int_distribution<int> exponent(std::numeric_limits<S>::min_exponent - 30,
-                                              std::numeric_limits<S>::max_exponent - 2);
+  MixedVectors<S> vector(12);
   for (int trial = 0; trial < 20000; ++trial) {
-    Vec3T<S> v;
-    for (int i = 0; i < 3; ++i)
-      v[i] = rng() % 5 == 0 ? S(0) : std::ldexp(unit(rng), exponent(rng) / (1 + int(rng() % 3)));
+    const Vec3T<S> v = vector();
     if (v.isZero()) continue;
     check_unit_of(v);
   }
