@@ -23,6 +23,7 @@
 #include "mink/math/pose.hpp"
 #include "mink/query/status.hpp"
 #include "mink/query/tolerances.hpp"
+#include "mink/shapes/shape_lengths.hpp"
 #include "mink/shapes/support_scan.hpp"
 #include "mink/support/concept.hpp"
 #include "mink/support/polytope_core.hpp"
@@ -847,6 +848,36 @@ template <class S>
   return nullptr;
 }
 
+/// Why a query cannot run, or nullptr, shape by shape and entry by entry; for
+/// query_input_error(), out of line, where the checks of lengths_and_poses_valid() fail.
+template <ConvexShape A, ConvexShape B>
+[[gnu::noinline, gnu::cold]] const char* query_input_error_in_full(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b) {
+  if (const char* e = a.error()) return e;
+  if (const char* e = b.error()) return e;
+  return pose_finiteness_error(pose_a, pose_b);
+}
+
+/// For two shapes made of lengths alone (shape_lengths.hpp): every pose entry and length finite
+/// and every length >= 0, from one sum of them all (finite unless an entry is not, or the sum of
+/// finite ones overflows: as poses_sum_finite()) and one minimum of the lengths, with one branch.
+/// Shape by shape, the checks took 72 of the 378 instructions of a box pair's boolean test apart,
+/// a fifth of its time: the test runs near the machine's instruction throughput.
+template <ConvexShape A, ConvexShape B>
+[[gnu::always_inline]] inline bool lengths_and_poses_valid(
+    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
+    const PoseT<typename A::Scalar>& pose_b) {
+  using S = typename A::Scalar;
+  const auto lengths_a = ShapeLengths<A>::of(a);
+  const auto lengths_b = ShapeLengths<B>::of(b);
+  const S sum = (pose_a.rotation.array() + pose_b.rotation.array()).sum() +
+                (pose_a.translation.array() + pose_b.translation.array()).sum() +
+                (lengths_a.sum() + lengths_b.sum());
+  const S least = std::min(lengths_a.minCoeff(), lengths_b.minCoeff());
+  return int(sum - sum == S(0)) & int(least >= S(0));
+}
+
 /// Why a query cannot run, or nullptr. Poses are checked for finiteness only: an orthonormal
 /// rotation is the caller's contract (pose_error() checks it in full, the JSON front end does).
 /// Always inlined: every query starts with it, and whether GCC inlines it otherwise changes with
@@ -855,11 +886,17 @@ template <ConvexShape A, ConvexShape B>
 [[gnu::always_inline]] inline const char* query_input_error(
     const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
     const PoseT<typename A::Scalar>& pose_b) {
-  if (const char* e = a.error()) return e;
-  if (const char* e = b.error()) return e;
-  if (!poses_sum_finite(pose_a, pose_b)) [[unlikely]]
-    return pose_finiteness_error(pose_a, pose_b);
-  return nullptr;
+  if constexpr (kLengthPair<A, B>) {
+    if (lengths_and_poses_valid(a, pose_a, b, pose_b)) [[likely]]
+      return nullptr;
+    return query_input_error_in_full(a, pose_a, b, pose_b);
+  } else {
+    if (const char* e = a.error()) return e;
+    if (const char* e = b.error()) return e;
+    if (!poses_sum_finite(pose_a, pose_b)) [[unlikely]]
+      return pose_finiteness_error(pose_a, pose_b);
+    return nullptr;
+  }
 }
 
 /// For distance() and contact(), whose GJK and EPA call B's support several times: when B's core

@@ -418,19 +418,9 @@ MINK_SEGMENT_CORES_INLINE std::optional<typename A::Scalar> closest_core_points_
   on_b = q.centre + t.v * hq;
   const Vec3T<S> gap = on_b - on_a;
   const S gap_sq = gap.squaredNorm();
-  // Before the routing: the general path gives the same gap. While the reach's square lies well
-  // inside the normal range, comparing squares is length_at_most() exactly, whatever gap_sq is
-  // (a gap whose square underflows is shorter than the reach, one whose square overflows longer),
-  // and the range test waits on the reach alone, not on the chain to the gap (length_at_most()
-  // there: capsule distance apart 4 % slower).
-  if constexpr (kStopWithinReach) {
-    const S reach_sq = reach * reach;
-    constexpr S kSmallest = std::numeric_limits<S>::min(), kLargest = std::numeric_limits<S>::max();
-    if (reach_sq >= S(4) * kSmallest && reach_sq <= kLargest / S(4)
-            ? gap_sq <= reach_sq
-            : length_at_most(gap, gap_sq, reach))
-      return std::nullopt;
-  }
+  // Before the routing: the general path gives the same gap.
+  if constexpr (kStopWithinReach)
+    if (length_at_most(gap, gap_sq, reach)) return std::nullopt;
   if (!(reciprocal_in_range(gap_sq) && gap_sq >= S(1e-6) * terms_sq)) [[unlikely]]
     return from_general_until<kStopWithinReach>(a, pose_a, b, pose_b, reach, on_a, on_b, unit);
   const S length = std::sqrt(gap_sq);

@@ -114,6 +114,94 @@ TEST(GjkBadInput, PosesTestedByOneSum) {
   EXPECT_TRUE(mink::intersect(capsule, far_a, capsule, far_a).intersect);
 }
 
+/// Every typed query on (a, b) reports `expected` (the message of the shape's own error(), or of
+/// the pose), and on (b, a) `expected_swapped`; a null message: no error.
+template <class A, class B>
+void expect_error(const A& a, const Pose& pa, const B& b, const Pose& pb, const char* expected,
+                  const char* expected_swapped) {
+  auto check = [&](const char* error, const char* query) {
+    SCOPED_TRACE(query);
+    if (!expected) {
+      EXPECT_EQ(error, nullptr) << error;
+      return;
+    }
+    ASSERT_NE(error, nullptr);
+    EXPECT_STREQ(error, expected);
+  };
+  check(mink::intersect(a, pa, b, pb).error, "intersect A, B");
+  check(mink::distance(a, pa, b, pb).error, "distance A, B");
+  check(mink::contact(a, pa, b, pb).error, "contact A, B");
+  expected = expected_swapped;
+  check(mink::intersect(b, pb, a, pa).error, "intersect B, A");
+  check(mink::distance(b, pb, a, pa).error, "distance B, A");
+  check(mink::contact(b, pb, a, pa).error, "contact B, A");
+}
+
+/// The same message in both orders.
+template <class A, class B>
+void expect_error(const A& a, const Pose& pa, const B& b, const Pose& pb, const char* expected) {
+  expect_error(a, pa, b, pb, expected, expected);
+}
+
+// Shapes made of lengths alone are tested together with the poses, by one sum and one minimum
+// (gjk.hpp, lengths_and_poses_valid()): each length of each shape, bad alone or beside bad values
+// elsewhere, must still get its own shape's message, in the order the shapes come; -0 is a
+// length; finite lengths and translations whose sum overflows are valid.
+TEST(GjkBadInput, LengthsTestedWithThePoses) {
+  const Pose p = Pose::identity();
+  const mink::Box box{Vec3(1, 2, 3)};
+  const mink::Rounded<mink::Box> rounded_box{box, 0.25};
+  const mink::Capsule capsule{0.5, 1};
+  const mink::Ellipsoid ellipsoid{Vec3(1, 2, 0.5)};
+  for (const double bad : {kNaN, kInf, -kInf, -1e-300, -1.0}) {
+    SCOPED_TRACE(testing::Message() << "value " << bad);
+    for (int k = 0; k < 3; ++k) {
+      mink::Box bad_box = box;
+      bad_box.half_extents[k] = bad;
+      const char* message = bad_box.error();
+      ASSERT_NE(message, nullptr);
+      expect_error(bad_box, p, capsule, p, message);
+      expect_error(bad_box, p, box, p, message);
+      expect_error(bad_box, p, rounded_box, p, message);
+      mink::Ellipsoid bad_ellipsoid = ellipsoid;
+      bad_ellipsoid.radii[k] = bad;
+      expect_error(bad_ellipsoid, p, box, p, bad_ellipsoid.error());
+    }
+    const mink::Rounded<mink::Box> bad_margin{box, bad};
+    expect_error(bad_margin, p, box, p, bad_margin.error());
+    expect_error(bad_margin, p, capsule, p, bad_margin.error());
+    const mink::Cylinder bad_cylinder{0.5, bad};
+    const mink::Cone bad_cone{bad, 1};
+    expect_error(bad_cylinder, p, bad_cone, p, bad_cylinder.error(), bad_cone.error());
+    // A bad pose beside a bad length: the shape's message comes first, as error() order says.
+    Pose bad_pose = Pose::identity();
+    bad_pose.rotation(0, 1) = bad;
+    const mink::Sphere bad_sphere{bad};
+    if (!std::isfinite(bad)) {
+      expect_error(box, bad_pose, capsule, p, "pose of A is not finite", "pose of B is not finite");
+      expect_error(box, p, capsule, bad_pose, "pose of B is not finite", "pose of A is not finite");
+      expect_error(bad_sphere, bad_pose, box, p, bad_sphere.error());
+    }
+  }
+  // Infinities of both signs in one sum: NaN, still caught.
+  expect_error(mink::Box{Vec3(1, kInf, 1)}, p, mink::Sphere{-kInf}, p,
+               mink::Box{Vec3(1, kInf, 1)}.error(), mink::Sphere{-kInf}.error());
+  // -0 is a length.
+  expect_error(mink::Box{Vec3(-0.0, 1, 1)}, p, mink::Capsule{-0.0, -0.0}, p, nullptr);
+  expect_error(mink::Rounded<mink::Box>{box, -0.0}, p, mink::Sphere{-0.0}, p, nullptr);
+  // Finite lengths whose sum overflows, and translations whose sum does.
+  const mink::Box huge{Vec3(6e307, 6e307, 6e307)};  // its six lengths sum to 3.6e308
+  expect_error(huge, p, huge, Pose::from_translation(Vec3(1e307, 0, 0)), nullptr);
+  EXPECT_DOUBLE_EQ(mink::contact(huge, p, huge, Pose::from_translation(Vec3(1e307, 0, 0))).depth,
+                   1.1e308);
+  expect_error(box, Pose::from_translation(Vec3(1.5e308, 1.5e308, 0)), capsule,
+               Pose::from_translation(Vec3(1.5e308, 1.5e308, 1)), nullptr);
+  const auto far = mink::distance(box, Pose::from_translation(Vec3(1.5e308, 1.5e308, 0)), capsule,
+                                  Pose::from_translation(Vec3(1.5e308, 1.5e308, 10)));
+  EXPECT_EQ(far.status, mink::Status::Separated);
+  EXPECT_NEAR(far.distance, 10 - 3 - 1.5, 1e-12);
+}
+
 TEST(GjkBadInput, QuaternionAndPoseValidation) {
   EXPECT_EQ(mink::quaternion_error(mink::Quat(1, 0, 0, 0)), nullptr);
   EXPECT_EQ(mink::quaternion_error(mink::Quat(0.5, 0.5, 0.5, 0.5)), nullptr);

@@ -2,7 +2,8 @@
 // the last bit, at every magnitude a length can have: 0, subnormal, the ranges where the square
 // underflows or overflows, and ordinary ones; box_bounding_radii() against bounding_radius(); and
 // unit_of() against the quotient in long double at those magnitudes, on both sides of the bounds
-// of unit_beside_root()'s range.
+// of unit_beside_root()'s range; length_at_most() against the lengths compared in long double,
+// with reaches on both sides of the bounds of its range.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -98,6 +99,67 @@ TEST(Lengths, UnitOfAtEveryMagnitudeDouble) {
 }
 TEST(Lengths, UnitOfAtEveryMagnitudeFloat) {
   check_unit_of_at_every_magnitude<float>();
+}
+
+/// length_at_most(v, |v|^2, reach) against |v| <= reach in long double (v scaled by its largest
+/// coordinate first), wherever the two lengths are more than 4 eps (or 4 of the smallest
+/// subnormal steps) apart; exactly for reach 0.
+template <class S>
+void check_length_at_most(const Vec3T<S>& v, S reach) {
+  const bool verdict = length_at_most(v, v.squaredNorm(), reach);
+  if (reach == S(0)) {
+    EXPECT_EQ(verdict, (v.array() == S(0)).all()) << v.transpose();
+    return;
+  }
+  const long double largest = std::max(
+      {std::abs((long double)v.x()), std::abs((long double)v.y()), std::abs((long double)v.z())});
+  long double length = 0;
+  if (largest > 0) {
+    const long double x = v.x() / largest, y = v.y() / largest, z = v.z() / largest;
+    length = largest * std::sqrt(x * x + y * y + z * z);
+  }
+  // A subnormal length is known to a few of the smallest steps only, not to eps.
+  const long double margin = 4 * std::numeric_limits<S>::epsilon() * (long double)reach +
+                             4 * (long double)std::numeric_limits<S>::denorm_min();
+  if (length <= reach - margin) EXPECT_TRUE(verdict) << v.transpose() << " reach " << reach;
+  if (length >= reach + margin) EXPECT_FALSE(verdict) << v.transpose() << " reach " << reach;
+}
+
+template <class S>
+void check_length_at_most_at_every_magnitude() {
+  MixedVectors<S> vector(13);
+  const S factors[] = {S(0.5), S(1) - 16 * std::numeric_limits<S>::epsilon(),
+                       S(1) + 16 * std::numeric_limits<S>::epsilon(), S(2)};
+  for (int trial = 0; trial < 20000; ++trial) {
+    const Vec3T<S> v = vector(), w = vector();
+    const S length = length_of(v);
+    check_length_at_most(v, S(0));
+    check_length_at_most(v, length_of(w));  // an unrelated reach, of any magnitude
+    for (const S factor : factors)
+      if (std::isfinite(length * factor)) check_length_at_most(v, length * factor);
+  }
+  // Reaches whose squares lie at and around the bounds of the range compared on squares, against
+  // vectors whose squares underflow, overflow or lie near the reach's.
+  const int bounds[] = {std::numeric_limits<S>::min_exponent + 1,
+                        std::numeric_limits<S>::max_exponent - 2};
+  for (const int bound : bounds) {
+    for (int step = -3; step <= 3; ++step) {
+      const S reach = std::ldexp(S(1), (bound + step) / 2);
+      for (const S scale :
+           {S(0), std::numeric_limits<S>::denorm_min(), S(0.5) * reach, S(0.99) * reach,
+            S(1.01) * reach, S(2) * reach, std::numeric_limits<S>::max() / S(4)}) {
+        check_length_at_most(Vec3T<S>(scale, S(0), S(0)), reach);
+        check_length_at_most(Vec3T<S>(Vec3T<S>(scale, scale, scale) / S(2)), reach);
+      }
+    }
+  }
+}
+
+TEST(Lengths, LengthAtMostAtEveryMagnitudeDouble) {
+  check_length_at_most_at_every_magnitude<double>();
+}
+TEST(Lengths, LengthAtMostAtEveryMagnitudeFloat) {
+  check_length_at_most_at_every_magnitude<float>();
 }
 
 TEST(Lengths, BoxBoundingRadiiEqualBoundingRadius) {
