@@ -277,33 +277,37 @@ template <class S>
   return ((y.cwiseAbs() - ha).array() <= slack).all();
 }
 
-/// Separated as soon as one of the 15 axes separates the boxes by more than `gap` (the distance
-/// is at least that, to rounding, for the rotation r as given); Overlapping when no axis separates
-/// them at all (the separating axis theorem), or when a point of B lies within `gap` of A
+/// Separated as soon as one of the 15 axes separates the boxes by more than `separation_gap` (the
+/// distance is at least that, to rounding, for the rotation r as given); Overlapping when no axis
+/// separates them at all (the separating axis theorem), or when a point of B lies within
+/// `proof_gap` of A
 /// (box_point_of_b_near_a(), tried after each box's face axes, which tell most separated pairs
 /// apart first). The points tried: B's point nearest to A's point nearest to B's centre, and B's
 /// point nearest to A's centre; one of them is in A for most overlapping pairs (resting contact,
 /// three quarters of random overlaps), where the axes would all be needed. Unsure in between, and
 /// also when an edge axis is nearly degenerate (edges parallel to 1e-6 but not exactly) and no
-/// point proved the overlap, where the theorem's axis cannot be trusted to rounding. This form
+/// point proved the overlap, where the theorem's axis cannot be trusted to rounding. For the
+/// verdict on a gap g (unit: length; the core distance that still counts as intersecting),
+/// proof_gap <= g <= separation_gap: Unsure where the bounds leave it open. This form
 /// computes the axes as it goes, for intersect(), which is its only caller: always inlined there,
 /// so that the relative pose stays in registers instead of going to the call through memory
 /// (a separated box pair's boolean 18.0 -> 15.9 ns in a driver).
 template <class S>
 [[gnu::always_inline]] inline BoxBoxVerdict box_box_verdict(const Vec3T<S>& ha, const Vec3T<S>& hb,
                                                             const Mat3T<S>& r, const Vec3T<S>& t,
-                                                            S gap) {
+                                                            S proof_gap, S separation_gap) {
   const AbsRotation<S> abs_r = abs_rotation(r);
-  bool apart = false;  // some axis shows a gap > 0 (but not > `gap`)
+  bool apart = false;  // some axis shows a gap > 0 (but not > `separation_gap`)
   const Vec3T<S> face_a = box_face_overlaps_a(ha, hb, abs_r, t);
   for (int i = 0; i < 3; ++i) {
     const S g = -face_a[i];
-    if (g > gap) return BoxBoxVerdict::Separated;
+    if (g > separation_gap) return BoxBoxVerdict::Separated;
     apart |= g > S(0);
   }
   // A's point nearest to B's centre, taken to B's frame (then clamped to B).
   const Vec3T<S> near_b_centre = r.transpose() * (Vec3T<S>(t.cwiseMax(-ha).cwiseMin(ha)) - t);
-  if (box_point_of_b_near_a(ha, hb, r, t, near_b_centre, gap)) return BoxBoxVerdict::Overlapping;
+  if (box_point_of_b_near_a(ha, hb, r, t, near_b_centre, proof_gap))
+    return BoxBoxVerdict::Overlapping;
   // B's centre along B's axes, whole (built entry by entry, it would stall when read whole): A's
   // centre is at -offset_along_b in B's frame.
   const Vec3T<S> offset_along_b = r.transpose() * t;
@@ -311,14 +315,14 @@ template <class S>
   const Vec3T<S> face_b = box_face_overlaps_b(ha, hb, rows, offset_along_b);
   for (int j = 0; j < 3; ++j) {
     const S g = -face_b[j];
-    if (g > gap) return BoxBoxVerdict::Separated;
+    if (g > separation_gap) return BoxBoxVerdict::Separated;
     apart |= g > S(0);
   }
-  if (box_point_of_b_near_a(ha, hb, r, t, Vec3T<S>(-offset_along_b), gap))
+  if (box_point_of_b_near_a(ha, hb, r, t, Vec3T<S>(-offset_along_b), proof_gap))
     return BoxBoxVerdict::Overlapping;
   BoxPairAxes<S> axes;
   box_edge_axes(ha, hb, rows, t, axes);
-  return box_edge_verdict(axes, gap, apart);
+  return box_edge_verdict(axes, separation_gap, apart);
 }
 
 /// The same verdict from all 15 axes already computed (box_pair_axes()), for the queries that

@@ -25,7 +25,9 @@ using oracle::rotated;
 // hands the rest to GJK: corner near corner and edge near edge (where the distance exceeds every
 // axis's gap), edges parallel to 1e-9 and exactly, faces flush, each moved to a hair inside, at
 // and outside touching; the flag must match the Minkowski-difference oracle whenever the gap is
-// outside the touching band, and agree with distance() always.
+// outside the touching band, and agree with distance() always. Gaps of half and twice the touching
+// tolerance (relative * size) must count as touching and as apart: the axis test decides on
+// bounds of that tolerance and leaves what lies between them to GJK.
 TEST(GjkNasty, BoxBooleanNearTouching) {
   const Box a{Vec3(1, 0.5, 0.25)}, b{Vec3(0.3, 0.7, 0.4)};
   const double size = a.half_extents.norm() + b.half_extents.norm();
@@ -47,7 +49,8 @@ TEST(GjkNasty, BoxBooleanNearTouching) {
                            Quat(pa.rotation * turn.rotation));
       const auto apart = mink::distance(a, pa, b, pb);
       ASSERT_EQ(apart.status, mink::Status::Separated);
-      for (double delta : {-1e-6, -1e-11, 0.0, 1e-11, 1e-8, 1e-6}) {
+      const double tolerance = mink::Tolerances{}.relative;
+      for (double delta : {-1e-6, -1e-11, 0.0, 0.5 * tolerance, 2 * tolerance, 1e-11, 1e-8, 1e-6}) {
         Pose moved = pb;
         moved.translation -= apart.normal * (apart.distance - delta * size);
         const oracle::WorldBox wa{oracle::widen(a.half_extents), oracle::widen(pa.rotation),
@@ -62,6 +65,8 @@ TEST(GjkNasty, BoxBooleanNearTouching) {
         ASSERT_NE(got.status, mink::Status::InvalidInput);
         EXPECT_EQ(got.intersect, dist.status == mink::Status::Intersecting)
             << "intersect() and distance() disagree at delta " << delta;
+        if (delta == 0.5 * tolerance) EXPECT_TRUE(got.intersect) << "a gap of half the tolerance";
+        if (delta == 2 * tolerance) EXPECT_FALSE(got.intersect) << "a gap of twice the tolerance";
         const double gap = static_cast<double>(expected.gap);
         if (std::abs(gap) > oracle::kTouchingBand * size) {
           EXPECT_EQ(got.intersect, gap <= 0) << "gap " << gap << " at delta " << delta;
@@ -70,7 +75,7 @@ TEST(GjkNasty, BoxBooleanNearTouching) {
       }
     }
   }
-  EXPECT_GE(checked, cases / 2);  // the deltas of 1e-8 and 1e-6 are outside the band
+  EXPECT_GE(checked, 3 * cases / 8);  // the deltas of -1e-6, 1e-8 and 1e-6 are outside the band
 }
 
 }  // namespace
