@@ -126,7 +126,7 @@ DistanceResultT<typename A::Scalar> distance_in_range(
     Vec3T<S> on_a, on_b, normal = Vec3T<S>::UnitZ();
     const S radius_a = a.core_radius(), radius_b = b.core_radius();
     const S touch = tolerances.relative * (a.bounding_radius() + b.bounding_radius());
-    const std::optional<S> core_distance = detail::closest_core_points_beyond(
+    const std::optional<S> core_distance = detail::closest_core_points_until<true>(
         a, pose_a, b, pose_b, radius_a + radius_b + touch, on_a, on_b, &normal);
     if (!core_distance) {
       result.status = Status::Intersecting;

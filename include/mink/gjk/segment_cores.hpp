@@ -381,7 +381,7 @@ template <bool kStopWithinReach, class A, class B>
 /// With kStopWithinReach, nothing (std::nullopt) where the cores are within `reach` of each other,
 /// decided as intersect() decides it (length_at_most() on the gap, before the root): distance()
 /// reports no points or direction there, and the root and the unit direction, the last links of
-/// the query's chain of dependent operations, are not taken (closest_core_points_beyond()).
+/// the query's chain of dependent operations, are not taken.
 template <bool kStopWithinReach, class A, class B>
 MINK_SEGMENT_CORES_INLINE std::optional<typename A::Scalar> closest_core_points_until(
     const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
@@ -436,17 +436,6 @@ MINK_SEGMENT_CORES_INLINE typename A::Scalar closest_core_points(
     Vec3T<typename A::Scalar>& on_b, Vec3T<typename A::Scalar>* unit = nullptr) {
   return *closest_core_points_until<false>(a, pose_a, b, pose_b, typename A::Scalar(0), on_a, on_b,
                                            unit);
-}
-
-/// closest_core_points() where the cores are farther apart than `reach`, else nothing (see
-/// closest_core_points_until()).
-template <class A, class B>
-MINK_SEGMENT_CORES_INLINE std::optional<typename A::Scalar> closest_core_points_beyond(
-    const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
-    const PoseT<typename A::Scalar>& pose_b, typename A::Scalar reach,
-    Vec3T<typename A::Scalar>& on_a, Vec3T<typename A::Scalar>& on_b,
-    Vec3T<typename A::Scalar>* unit) {
-  return closest_core_points_until<true>(a, pose_a, b, pose_b, reach, on_a, on_b, unit);
 }
 
 }  // namespace mink::detail
