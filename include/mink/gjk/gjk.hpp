@@ -848,8 +848,8 @@ template <class S>
   return nullptr;
 }
 
-/// Why a query cannot run, or nullptr, shape by shape and entry by entry; for
-/// query_input_error(), out of line, where the checks of lengths_and_poses_valid() fail.
+/// Why a query cannot run, or nullptr, shape by shape and entry by entry, in the order of the
+/// messages; for query_input_error(), out of line, where its quick checks fail.
 template <ConvexShape A, ConvexShape B>
 [[gnu::noinline, gnu::cold]] const char* query_input_error_in_full(
     const A& a, const PoseT<typename A::Scalar>& pose_a, const B& b,
@@ -891,10 +891,8 @@ template <ConvexShape A, ConvexShape B>
       return nullptr;
     return query_input_error_in_full(a, pose_a, b, pose_b);
   } else {
-    if (const char* e = a.error()) return e;
-    if (const char* e = b.error()) return e;
-    if (!poses_sum_finite(pose_a, pose_b)) [[unlikely]]
-      return pose_finiteness_error(pose_a, pose_b);
+    if (a.error() || b.error() || !poses_sum_finite(pose_a, pose_b)) [[unlikely]]
+      return query_input_error_in_full(a, pose_a, b, pose_b);
     return nullptr;
   }
 }
