@@ -588,9 +588,10 @@ EpaOutcome<typename A::Scalar> run_epa(const CoreDifference<A, B>& diff,
   // Witness points of the degenerate answers: the point of GJK's simplex nearest the origin.
   Vec3T<S> gjk_a, gjk_b;
   simplex.witness_points(gjk_a, gjk_b);
+  // EPA's directions jump from face to face: scans find their index with no branch.
   auto support = [&](const Vec3T<S>& d) {
     SimplexVertexT<S> vertex;
-    diff.support(d, vertex);
+    diff.template support<SupportPattern::Scattered>(d, vertex);
     ++out.iterations;
     return vertex;
   };

@@ -47,8 +47,9 @@ struct FramedPointsT {
   alignas(16) S z[kMaxPoints];
   std::size_t size = 0;
 
+  template <SupportPattern P = SupportPattern::Coherent>
   [[gnu::always_inline]] inline Vec3T<S> support(const Vec3T<S>& d) const {
-    const std::size_t i = support_index(x, y, z, size, d.x(), d.y(), d.z());
+    const std::size_t i = support_index<P>(x, y, z, size, d.x(), d.y(), d.z());
     return {x[i], y[i], z[i]};
   }
 };
@@ -65,19 +66,30 @@ struct CoreDifference {
   const FramedPointsT<S>* b_points = nullptr;
 
   // Always inlined: it is the body of every GJK iteration, and the compiler's cost model
-  // otherwise leaves it out of line for the larger shapes.
+  // otherwise leaves it out of line for the larger shapes. `P`: how the directions move between
+  // calls (SupportPattern); polytope cores' scans take it, the other shapes need no choice.
+  template <SupportPattern P = SupportPattern::Coherent>
   [[gnu::always_inline]] inline void support(const Vec3T<S>& d, SimplexVertexT<S>& out) const {
-    out.a = a.support_core(d);
-    out.b = support_b(d);
+    if constexpr (PolytopeCore<A>::value)
+      out.a = PolytopeCore<A>::of(a).template support_core<P>(d);
+    else
+      out.a = a.support_core(d);
+    out.b = support_b<P>(d);
     out.w = out.a - out.b;
     out.dir = d;
   }
 
   /// B's core support point in A's frame for the direction -d (d as for support()).
+  template <SupportPattern P = SupportPattern::Coherent>
   [[gnu::always_inline]] inline Vec3T<S> support_b(const Vec3T<S>& d) const {
-    if constexpr (PolytopeCore<B>::value)
-      if (b_points) return b_points->support(-d);
-    return rotation * b.support_core(rotation.transpose() * (-d)) + translation;
+    if constexpr (PolytopeCore<B>::value) {
+      if (b_points) return b_points->template support<P>(-d);
+      return rotation *
+                 PolytopeCore<B>::of(b).template support_core<P>(rotation.transpose() * (-d)) +
+             translation;
+    } else {
+      return rotation * b.support_core(rotation.transpose() * (-d)) + translation;
+    }
   }
 
   /// Both shapes name a point of their core towards its middle (HasCoreCentre).
@@ -247,7 +259,7 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
       first = nullptr;
     } else {
       if constexpr (kWitnesses) {
-        diff.support(d, next);  // sets next.dir
+        diff.template support<SupportPattern::Scattered>(d, next);  // sets next.dir
       } else {
         next.w = diff.support_point(d);
         next.dir = d;

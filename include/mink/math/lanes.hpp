@@ -106,5 +106,26 @@ template <class V>
   return mask != 0;
 }
 
+/// v = take_a ? a : b, through a mask of every lane, with no branch on `take_a`.
+template <class V>
+[[gnu::always_inline]] inline void lanes_pick(V& v, bool take_a, const V& a, const V& b) {
+  typedef long long Mask __attribute__((vector_size(sizeof(V))));
+  const Mask all = Mask{} - static_cast<long long>(take_a);  // every bit set when taken
+  v = V((Mask(a) & all) | (Mask(b) & ~all));
+}
+
+/// Bit l set where lane l of v equals x (ordered: NaN lanes never do), two lanes at a time.
+template <class V>
+[[gnu::always_inline]] inline unsigned lanes_equal_mask(const V& v, double x) {
+  const __m128d target = _mm_set1_pd(x);
+  unsigned mask = 0;
+  for (int k = 0; k < lane_count<V>; k += 2) {
+    __m128d pair;
+    std::memcpy(&pair, reinterpret_cast<const double*>(&v) + k, sizeof pair);
+    mask |= unsigned(_mm_movemask_pd(_mm_cmpeq_pd(pair, target))) << k;
+  }
+  return mask;
+}
+
 }  // namespace mink::detail
 #endif

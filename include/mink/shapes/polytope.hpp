@@ -135,11 +135,14 @@ class PolytopeT {
   std::size_t size() const { return x_.size(); }
   Vec3T<S> point(std::size_t i) const { return {x_[i], y_[i], z_[i]}; }
 
-  /// Always inlined, as support_index() is: the body of every GJK and EPA iteration.
+  /// Always inlined, as support_index() is: the body of every GJK and EPA iteration. `P`: how
+  /// the caller's directions move between calls, which picks how a scan finds its index
+  /// (support_scan.hpp); the same point either way.
+  template <SupportPattern P = SupportPattern::Coherent>
   [[gnu::always_inline]] inline Vec3T<S> support_core(const Vec3T<S>& d) const {
     if (lazy_hull_)
       if (const S* p = lazy_support_position(d)) return {p[0], p[1], p[2]};
-    return point(scan_index(d));
+    return point(scan_index<P>(d));
   }
   /// The mean of the points: inside the hull (any one point may be a vertex, on its boundary).
   const Vec3T<S>& core_centre() const { return centre_; }
@@ -168,8 +171,10 @@ class PolytopeT {
   }
 
   /// The brute-force answer, whatever support_index does: lowest index among the farthest.
+  template <SupportPattern P = SupportPattern::Coherent>
   [[gnu::always_inline]] inline std::size_t scan_index(const Vec3T<S>& d) const {
-    return detail::support_index(x_.data(), y_.data(), z_.data(), x_.size(), d.x(), d.y(), d.z());
+    return detail::support_index<P>(x_.data(), y_.data(), z_.data(), x_.size(), d.x(), d.y(),
+                                    d.z());
   }
 
   /// The hull support climbs once the polytope has switched, else null (see the class comment).

@@ -1,9 +1,11 @@
 // The SIMD support scan against its scalar twin, which defines the answer (lowest index among the
 // farthest points), including ties, tails shorter than a block and NaN directions: the path the
-// build chooses, and each instruction set's scan called directly (AVX2 where this CPU has it).
+// build chooses, and each instruction set's scan called directly (AVX2 where this CPU has it),
+// each for both SupportPatterns (the index by a branch and by masks).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <random>
@@ -17,13 +19,27 @@ namespace {
 
 struct Soa {
   std::vector<double> x, y, z;
+  template <SupportPattern P = SupportPattern::Coherent>
   std::size_t index(const Vec3& d) const {
-    return detail::support_index(x.data(), y.data(), z.data(), x.size(), d.x(), d.y(), d.z());
+    return detail::support_index<P>(x.data(), y.data(), z.data(), x.size(), d.x(), d.y(), d.z());
+  }
+  /// The index of both patterns, or SIZE_MAX when they differ.
+  std::size_t both(const Vec3& d) const {
+    const std::size_t i = index(d);
+    return index<SupportPattern::Scattered>(d) == i ? i : SIZE_MAX;
   }
 #if defined(__SSE2__)
+  template <SupportPattern P = SupportPattern::Coherent>
   std::size_t sse2(const Vec3& d) const {
-    return detail::support_index_many_sse2(x.data(), y.data(), z.data(), x.size(), d.x(), d.y(),
-                                           d.z());
+    return detail::support_index_many_sse2<P>(x.data(), y.data(), z.data(), x.size(), d.x(), d.y(),
+                                              d.z());
+  }
+#endif
+#if defined(__AVX2__) || defined(MINK_AVX2_DISPATCH)
+  template <SupportPattern P = SupportPattern::Coherent>
+  std::size_t avx2(const Vec3& d) const {
+    return detail::support_index_many_avx2<P>(x.data(), y.data(), z.data(), x.size(), d.x(), d.y(),
+                                              d.z());
   }
 #endif
   std::size_t scalar(const Vec3& d) const {
@@ -55,21 +71,23 @@ bool can_run_avx2() {
 #endif
 }
 
-/// Every scan against the scalar twin: the one the build chooses and, for more than 8 points,
-/// SSE2 and AVX2 (where it runs) called directly.
+/// Every scan against the scalar twin, for both patterns: the one the build chooses and, for more
+/// than 8 points, SSE2 and AVX2 (where it runs) called directly.
 void expect_every_scan_matches(const Soa& s, const Vec3& d, const char* what) {
+  constexpr auto kScattered = SupportPattern::Scattered;
   const std::size_t want = s.scalar(d);
   EXPECT_EQ(s.index(d), want) << what << ", " << s.x.size() << " points";
+  EXPECT_EQ(s.index<kScattered>(d), want) << what << ", scattered, " << s.x.size() << " points";
   if (s.x.size() <= 8) return;
 #if defined(__SSE2__)
   EXPECT_EQ(s.sse2(d), want) << what << ", SSE2, " << s.x.size() << " points";
+  EXPECT_EQ(s.sse2<kScattered>(d), want) << what << ", SSE2 scattered, " << s.x.size() << " points";
 #endif
 #if defined(__AVX2__) || defined(MINK_AVX2_DISPATCH)
   if (can_run_avx2()) {
-    EXPECT_EQ(detail::support_index_many_avx2(s.x.data(), s.y.data(), s.z.data(), s.x.size(), d.x(),
-                                              d.y(), d.z()),
-              want)
-        << what << ", AVX2, " << s.x.size() << " points";
+    EXPECT_EQ(s.avx2(d), want) << what << ", AVX2, " << s.x.size() << " points";
+    EXPECT_EQ(s.avx2<kScattered>(d), want)
+        << what << ", AVX2 scattered, " << s.x.size() << " points";
   }
 #endif
 }
@@ -87,7 +105,7 @@ TEST(SupportScan, TiesGoToTheLowestIndex) {
     for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 1, 0),
                           Vec3(-1, 0, 0), Vec3(0, -1, -1), Vec3(1, 1, 1)})
       expect_every_scan_matches(s, d, "lattice");
-    EXPECT_EQ(s.index(Vec3(0, 0, 0)), 0u);  // every point ties: index 0
+    EXPECT_EQ(s.both(Vec3(0, 0, 0)), 0u);  // every point ties: index 0
   }
 }
 
@@ -133,7 +151,7 @@ TEST(SupportScan, FewPointsTiesGoToTheLowestIndex) {
     }
     for (const Vec3& d : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(-1, 0, 0),
                           Vec3(1, 1, 0), Vec3(0, -1, 1), Vec3(0, 0, 0), Vec3(1, 1, 1)})
-      EXPECT_EQ(s.index(d), s.scalar(d)) << n << " points, direction " << d.transpose();
+      EXPECT_EQ(s.both(d), s.scalar(d)) << n << " points, direction " << d.transpose();
   }
 }
 
@@ -153,12 +171,12 @@ TEST(SupportScan, FewPointsMatchTheScalarTwin) {
         s.z.push_back(u(rng));
       }
       const Vec3 d(u(rng), u(rng), u(rng));
-      EXPECT_EQ(s.index(d), s.scalar(d)) << n << " points";
-      EXPECT_EQ(s.index(Vec3(nan, d.y(), d.z())), s.scalar(Vec3(nan, d.y(), d.z())));
+      EXPECT_EQ(s.both(d), s.scalar(d)) << n << " points";
+      EXPECT_EQ(s.both(Vec3(nan, d.y(), d.z())), s.scalar(Vec3(nan, d.y(), d.z())));
       // Some dot products NaN (inf times a 0 coordinate), the others +-inf or finite.
       for (std::size_t i = 0; i < n; i += 2) s.x[i] = 0;
       const Vec3 d_inf(trial % 2 ? inf : -inf, d.y(), d.z());
-      EXPECT_EQ(s.index(d_inf), s.scalar(d_inf)) << n << " points, an infinite direction";
+      EXPECT_EQ(s.both(d_inf), s.scalar(d_inf)) << n << " points, an infinite direction";
     }
   }
 }
@@ -182,6 +200,7 @@ TEST(SupportScan, HitsCarryTheLargestDotProduct) {
       const detail::SupportHit<double> hit =
           detail::support_hit(s.x.data(), s.y.data(), s.z.data(), n, d.x(), d.y(), d.z());
       EXPECT_EQ(hit.index(), s.scalar(d)) << n << " points";
+      EXPECT_EQ(hit.index<SupportPattern::Scattered>(), s.scalar(d)) << n << " points";
       EXPECT_EQ(hit.value, largest_dot(s, d)) << n << " points";
     }
   }
@@ -193,6 +212,7 @@ TEST(SupportScan, HitsCarryTheLargestDotProduct) {
       const Vec3 d(g(rng), g(rng), g(rng));
       const detail::SupportHit<double> hit = p.support_core_hit(d);
       const Vec3 point = p.support_core(d);
+      EXPECT_EQ(p.support_core<SupportPattern::Scattered>(d), point) << n << " points";
       EXPECT_EQ(p.point(hit.index()), point) << n << " points";
       EXPECT_NEAR(hit.value, point.dot(d), 1e-14 * point.norm() * d.norm()) << n << " points";
     }
@@ -208,15 +228,17 @@ TEST(SupportScan, NanDirectionGivesAValidIndex) {
     s.z.push_back(1.0);
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_LT(s.index(Vec3(nan, 0, 0)), s.x.size());
+  const Vec3 d(nan, 0, 0);
+  EXPECT_LT(s.index(d), s.x.size());
+  EXPECT_LT(s.index<SupportPattern::Scattered>(d), s.x.size());
 #if defined(__SSE2__)
-  EXPECT_LT(s.sse2(Vec3(nan, 0, 0)), s.x.size());
+  EXPECT_LT(s.sse2(d), s.x.size());
+  EXPECT_LT(s.sse2<SupportPattern::Scattered>(d), s.x.size());
 #endif
 #if defined(__AVX2__) || defined(MINK_AVX2_DISPATCH)
   if (can_run_avx2()) {
-    EXPECT_LT(detail::support_index_many_avx2(s.x.data(), s.y.data(), s.z.data(), s.x.size(), nan,
-                                              0.0, 0.0),
-              s.x.size());
+    EXPECT_LT(s.avx2(d), s.x.size());
+    EXPECT_LT(s.avx2<SupportPattern::Scattered>(d), s.x.size());
   }
 #endif
 }
