@@ -110,6 +110,9 @@ namespace mink {
 /// Warm climbing wins from about 24 vertices, cold from about 128; at 64 warm queries are 3x
 /// faster than the scan and cold ones at most 2.2x slower. Full table: docs/architecture.md.
 inline constexpr std::size_t kHullClimbMinVertices = 64;
+/// A polytope's support calls with scattered directions (EPA's; SupportPattern in
+/// support_scan.hpp) scan up to this many points instead of climbing (PolytopeT::support_core).
+inline constexpr std::size_t kScatteredScanMaxPoints = 128;
 
 /// The largest plateau (vertices of equal support value) the climb collects to break a tie; a
 /// larger one is resolved by the scan, with the same answer.
