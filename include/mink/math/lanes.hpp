@@ -92,18 +92,29 @@ template <class V>
   return _mm_cvtsd_f64(_mm_max_sd(x, _mm_unpackhi_pd(x, x)));
 }
 
-/// Whether any lane of v is greater than x (ordered: NaN lanes are not), two lanes at a time (a
-/// compare and a sign-bit mask each).
-template <class V>
-[[gnu::always_inline]] inline bool lanes_any_greater(const V& v, double x) {
+/// Which comparison lanes_mask() makes.
+enum class LaneTest { Greater, Equal };
+
+/// Bit l set where lane l of v is greater than (equal to) x, ordered: NaN lanes never are. Two
+/// lanes at a time, a compare and a sign-bit mask each.
+template <LaneTest kTest, class V>
+[[gnu::always_inline]] inline unsigned lanes_mask(const V& v, double x) {
   const __m128d limit = _mm_set1_pd(x);
-  int mask = 0;
+  unsigned mask = 0;
   for (int k = 0; k < lane_count<V>; k += 2) {
     __m128d pair;
     std::memcpy(&pair, reinterpret_cast<const double*>(&v) + k, sizeof pair);
-    mask |= _mm_movemask_pd(_mm_cmpgt_pd(pair, limit));
+    const __m128d hit =
+        kTest == LaneTest::Greater ? _mm_cmpgt_pd(pair, limit) : _mm_cmpeq_pd(pair, limit);
+    mask |= unsigned(_mm_movemask_pd(hit)) << k;
   }
-  return mask != 0;
+  return mask;
+}
+
+/// Whether any lane of v is greater than x (ordered: NaN lanes are not).
+template <class V>
+[[gnu::always_inline]] inline bool lanes_any_greater(const V& v, double x) {
+  return lanes_mask<LaneTest::Greater>(v, x) != 0;
 }
 
 /// v = take_a ? a : b, through a mask of every lane, with no branch on `take_a`.
@@ -112,19 +123,6 @@ template <class V>
   typedef long long Mask __attribute__((vector_size(sizeof(V))));
   const Mask all = Mask{} - static_cast<long long>(take_a);  // every bit set when taken
   v = V((Mask(a) & all) | (Mask(b) & ~all));
-}
-
-/// Bit l set where lane l of v equals x (ordered: NaN lanes never do), two lanes at a time.
-template <class V>
-[[gnu::always_inline]] inline unsigned lanes_equal_mask(const V& v, double x) {
-  const __m128d target = _mm_set1_pd(x);
-  unsigned mask = 0;
-  for (int k = 0; k < lane_count<V>; k += 2) {
-    __m128d pair;
-    std::memcpy(&pair, reinterpret_cast<const double*>(&v) + k, sizeof pair);
-    mask |= unsigned(_mm_movemask_pd(_mm_cmpeq_pd(pair, target))) << k;
-  }
-  return mask;
 }
 
 }  // namespace mink::detail

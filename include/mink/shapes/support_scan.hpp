@@ -235,7 +235,8 @@ template <int W, SupportPattern P>
   if (best > -std::numeric_limits<double>::infinity()) {
     if constexpr (P == SupportPattern::Scattered) {
       unsigned mask = 0;
-      for (int c = 0; c < kVectors; ++c) mask |= lanes_equal_mask(best_dots[c], best) << (c * W);
+      for (int c = 0; c < kVectors; ++c)
+        mask |= lanes_mask<LaneTest::Equal>(best_dots[c], best) << (c * W);
       if (mask != 0) best_i = best_block + std::size_t(std::countr_zero(mask));
     } else {
       double values[kBlock];
