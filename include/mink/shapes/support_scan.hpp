@@ -75,7 +75,6 @@ template <>
 struct SupportHit<double> {
   double value;
   __m128d dots[4];        ///< the dot products in pairs, -inf past `count`
-  __m128d best;           ///< `value` in both lanes
   std::size_t count = 0;  ///< the points scanned, or 0: `point` is the index
   std::size_t point = 0;
 
@@ -92,13 +91,12 @@ struct SupportHit<double> {
     if (count == 0) return point;
     if constexpr (P == SupportPattern::Scattered) {
       unsigned mask = 0;
-      for (int c = 0; c < 4; ++c)
-        mask |= unsigned(_mm_movemask_pd(_mm_cmpeq_pd(dots[c], best))) << (2 * c);
+      for (int c = 0; c < 4; ++c) mask |= lanes_mask<LaneTest::Equal>(dots[c], value) << (2 * c);
       mask &= (1u << count) - 1;
       return mask == 0 ? 0 : std::size_t(std::countr_zero(mask));
     } else {
       for (int c = 0; c < 4; ++c) {
-        const unsigned mask = unsigned(_mm_movemask_pd(_mm_cmpeq_pd(dots[c], best)));
+        const unsigned mask = lanes_mask<LaneTest::Equal>(dots[c], value);
         if (mask != 0) {
           // Lanes past `count` hold -inf: one of them first means the maximum is -inf or NaN.
           const std::size_t i = std::size_t(2 * c) + std::size_t(std::countr_zero(mask));
@@ -174,8 +172,7 @@ std::size_t support_index(const S* xs, const S* ys, const S* zs, std::size_t n, 
     dots[c] = _mm_max_pd(dots[c], low);
   }
   const __m128d pair_max = _mm_max_pd(_mm_max_pd(dots[0], dots[1]), _mm_max_pd(dots[2], dots[3]));
-  hit.best = _mm_max_pd(pair_max, _mm_shuffle_pd(pair_max, pair_max, 1));
-  hit.value = _mm_cvtsd_f64(hit.best);
+  hit.value = _mm_cvtsd_f64(_mm_max_pd(pair_max, _mm_shuffle_pd(pair_max, pair_max, 1)));
   hit.count = n;
   return hit;
 }
