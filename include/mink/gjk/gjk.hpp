@@ -70,10 +70,7 @@ struct CoreDifference {
   // calls (SupportPattern); polytope cores' scans take it, the other shapes need no choice.
   template <SupportPattern P = SupportPattern::Coherent>
   [[gnu::always_inline]] inline void support(const Vec3T<S>& d, SimplexVertexT<S>& out) const {
-    if constexpr (PolytopeCore<A>::value)
-      out.a = PolytopeCore<A>::of(a).template support_core<P>(d);
-    else
-      out.a = a.support_core(d);
+    out.a = core_support<P>(a, d);
     out.b = support_b<P>(d);
     out.w = out.a - out.b;
     out.dir = d;
@@ -82,14 +79,9 @@ struct CoreDifference {
   /// B's core support point in A's frame for the direction -d (d as for support()).
   template <SupportPattern P = SupportPattern::Coherent>
   [[gnu::always_inline]] inline Vec3T<S> support_b(const Vec3T<S>& d) const {
-    if constexpr (PolytopeCore<B>::value) {
+    if constexpr (PolytopeCore<B>::value)
       if (b_points) return b_points->template support<P>(-d);
-      return rotation *
-                 PolytopeCore<B>::of(b).template support_core<P>(rotation.transpose() * (-d)) +
-             translation;
-    } else {
-      return rotation * b.support_core(rotation.transpose() * (-d)) + translation;
-    }
+    return rotation * core_support<P>(b, Vec3T<S>(rotation.transpose() * (-d))) + translation;
   }
 
   /// Both shapes name a point of their core towards its middle (HasCoreCentre).

@@ -23,4 +23,14 @@ requires(PolytopeCore<T>::value) struct PolytopeCore<Rounded<T>> : std::true_typ
   static const auto& of(const Rounded<T>& r) { return PolytopeCore<T>::of(r.shape); }
 };
 
+/// The support point of `shape`'s core along d, in its frame: a polytope core scans by the
+/// caller's pattern (SupportPattern); the other shapes have no choice to make.
+template <SupportPattern P, class Shape, class S>
+[[gnu::always_inline]] inline Vec3T<S> core_support(const Shape& shape, const Vec3T<S>& d) {
+  if constexpr (PolytopeCore<Shape>::value)
+    return PolytopeCore<Shape>::of(shape).template support_core<P>(d);
+  else
+    return shape.support_core(d);
+}
+
 }  // namespace mink::detail
