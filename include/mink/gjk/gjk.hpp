@@ -251,6 +251,8 @@ EncloseVerdict enclose_origin(const CoreDifference<A, B>& diff, typename A::Scal
       first = nullptr;
     } else {
       if constexpr (kWitnesses) {
+        // Scattered: contact()'s enclosing directions jump about as EPA's do, and not converging,
+        // a branch on the winning point mispredicts (polytope32 contact overlapping 6 % faster).
         diff.template support<SupportPattern::Scattered>(d, next);  // sets next.dir
       } else {
         next.w = diff.support_point(d);
