@@ -605,6 +605,35 @@ TEST(ManifoldExact, BoxOnBoxStableUnderTinyRotations) {
   }
 }
 
+// A box on its equal, overhanging two of its sides by less than the side slack would once allow
+// (1e-9 to 1e-7 of the length): every point lies on both boxes to within 1e-9 of the size, so
+// the overhanging corners are clipped back to the lower box's face. Found by an independent
+// exact oracle (1e-8: corners 2.9e-9 of the size outside the lower box; 3e-8: 1.2e-8).
+TEST(ManifoldExact, SlightOverhangIsClippedToTheFace) {
+  const mink::Box box{{1, 1, 1}};
+  const double size = 2 * box.half_extents.norm();
+  for (const double overhang : {1e-9, 3e-9, 1e-8, 3e-8, 1e-7}) {
+    for (int k = 0; k < 20; ++k) {
+      Rng rng(608000 + k);
+      const Scene scene = random_scene(rng);
+      const Pose pa = scene.place(Vec3::Zero(), Quat::Identity());
+      const Pose pb = scene.place(Vec3(overhang, overhang, 1.5), Quat::Identity());
+      const ManifoldResult r = mink::manifold(box, pa, box, pb);
+      ASSERT_EQ(r.status, mink::Status::Intersecting) << overhang;
+      ASSERT_EQ(r.count, 4) << overhang;
+      for (int i = 0; i < r.count; ++i) {
+        const Vec3 on_a = pa.inverse_apply(r.points[i].point_a);
+        const Vec3 on_b = pb.inverse_apply(r.points[i].point_b);
+        // Inside each box (a scene 100 from the origin rounds to 1e-14).
+        const double tol = 1e-9 * size;
+        EXPECT_LE(on_a.cwiseAbs().maxCoeff(), 1 + tol) << overhang << " " << on_a.transpose();
+        EXPECT_LE(on_b.cwiseAbs().maxCoeff(), 1 + tol) << overhang << " " << on_b.transpose();
+        EXPECT_NEAR(r.points[i].depth, 0.5, tol);
+      }
+    }
+  }
+}
+
 // A hull whose resting face has far more corners than a feature holds (a 200-sided prism, which
 // climbs; as a ConvexHullShape and as a Polytope that has switched to its hull): the face still
 // comes whole from the hull's faces, so the 4 points are base corners spread over the whole rim
