@@ -300,19 +300,28 @@ void clip_feature_pair(const A& a, const B& b, const PoseT<typename A::Scalar>& 
         l.slack, buffer[1 - cur]);
     cur = 1 - cur;
   }
-  // Points the slack kept outside a line go onto it, as in clip_by_box_face(); twice over the
-  // lines, since going onto one line at a corner can leave the point a little outside the other.
-  for (int pass = 0; pass < 2; ++pass)
-    for (int i = 0; i < count; ++i)
+  // Points the slack kept outside a line go onto it, as in clip_by_box_face(); a moved point
+  // goes over the lines once more, since going onto one line at a corner can leave it a little
+  // outside the other.
+  for (int i = 0; i < count; ++i) {
+    PlanarPoint<S>& p = buffer[cur][i];
+    for (int pass = 0; pass < 2; ++pass) {
+      bool moved = false;
       for (int j = 0; j < line_count; ++j) {
         const Line& l = lines[j];
-        PlanarPoint<S>& p = buffer[cur][i];
         const S height = l.a * p.x + l.b * p.y - l.c;
-        if (!(height < S(0))) continue;
-        const S step = -height / (l.a * l.a + l.b * l.b);
+        const S ab = l.a * l.a + l.b * l.b;
+        // Not onto a line whose normal's square underflows (an edge 1e-154 of the coordinates
+        // long): the step would not be finite, and the point stays within the slack.
+        if (!(height < S(0)) || !(ab >= std::numeric_limits<S>::min())) continue;
+        const S step = -height / ab;
         p.x += step * l.a;
         p.y += step * l.b;
+        moved = true;
       }
+      if (!moved) break;
+    }
+  }
   // A reference edge: how far a point is beside it, seen along the normal (unit: length).
   S e0 = S(0), inv_e = S(0);
   if (ref->count == 2) {
